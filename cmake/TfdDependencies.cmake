@@ -1,0 +1,39 @@
+# Finds the Debian bookworm packages tfd builds on (see docs/building.md).
+find_package(Eigen3 3.4 REQUIRED NO_MODULE)
+find_package(TBB REQUIRED CONFIG)
+find_package(OpenEXR REQUIRED CONFIG)
+find_package(Imath REQUIRED CONFIG)
+find_package(nlohmann_json REQUIRED CONFIG)
+find_package(CLI11 REQUIRED CONFIG)
+find_package(muparser REQUIRED CONFIG)
+find_package(Threads REQUIRED)
+
+# CHOLMOD (SuiteSparse) has no CMake package on bookworm.
+find_path(CHOLMOD_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse REQUIRED)
+find_library(CHOLMOD_LIBRARY cholmod REQUIRED)
+add_library(tfd::cholmod INTERFACE IMPORTED)
+target_include_directories(tfd::cholmod INTERFACE ${CHOLMOD_INCLUDE_DIR})
+target_link_libraries(tfd::cholmod INTERFACE ${CHOLMOD_LIBRARY})
+
+# TetGen: TETLIBRARY makes failures throw an int instead of calling exit().
+find_path(TETGEN_INCLUDE_DIR tetgen.h REQUIRED)
+find_library(TETGEN_LIBRARY tet REQUIRED)
+add_library(tfd::tetgen INTERFACE IMPORTED)
+target_include_directories(tfd::tetgen INTERFACE ${TETGEN_INCLUDE_DIR})
+target_link_libraries(tfd::tetgen INTERFACE ${TETGEN_LIBRARY})
+target_compile_definitions(tfd::tetgen INTERFACE TETLIBRARY)
+
+# OpenVDB 10 ships only a find module, in its own folder; add it after TBB and OpenEXR are
+# found, since that folder also holds older find modules for them.
+find_path(OPENVDB_MODULE_DIR FindOpenVDB.cmake
+          PATHS /usr/lib/${CMAKE_LIBRARY_ARCHITECTURE}/cmake/OpenVDB
+                /usr/lib/cmake/OpenVDB /usr/local/lib/cmake/OpenVDB REQUIRED)
+list(APPEND CMAKE_MODULE_PATH ${OPENVDB_MODULE_DIR})
+find_package(OpenVDB REQUIRED)
+
+if(TFD_BUILD_TESTS)
+  find_package(GTest REQUIRED)
+endif()
+if(TFD_BUILD_BENCH)
+  find_package(benchmark REQUIRED)
+endif()

@@ -1,0 +1,12 @@
+# Common settings for every tfd target: repository root on the include path, warnings on.
+function(tfd_target_defaults target)
+  target_include_directories(${target} PUBLIC ${PROJECT_SOURCE_DIR})
+  target_compile_options(${target} PRIVATE -Wall -Wextra)
+endfunction()
+
+# One library per layer, made of every .cpp below the layer's folder.
+function(tfd_layer_library target folder)
+  file(GLOB_RECURSE sources CONFIGURE_DEPENDS ${folder}/*.cpp)
+  add_library(${target} STATIC ${sources})
+  tfd_target_defaults(${target})
+endfunction()

@@ -1,0 +1,90 @@
+#include "core/point_locator.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/tet_mesh.h"
+
+namespace tfd::core {
+
+PointLocator::PointLocator(const TetMesh& mesh) : mesh_(mesh) {
+  const Vec3 extent = (mesh.boundsMax() - mesh.boundsMin()).cwiseMax(1e-12);
+  // About one tet per cell: cell volume ≈ bounding volume / tet count.
+  const double cells = std::max<double>(1, static_cast<double>(mesh.tetCount()));
+  cellSize_ = std::cbrt(extent.prod() / cells);
+  cellSize_ = std::max(cellSize_, extent.maxCoeff() / 1024);  // cap the grid at 1024 per axis
+  origin_ = mesh.boundsMin();
+  for (int a = 0; a < 3; ++a) {
+    dims_[a] = std::max(1, static_cast<int>(std::ceil(extent[a] / cellSize_)));
+  }
+  const auto& pos = mesh.positions();
+  const auto& tets = mesh.tets();
+  const auto cellRange = [&](int t, std::array<int, 3>& lo, std::array<int, 3>& hi) {
+    Vec3 mn = pos[tets[t][0]], mx = mn;
+    for (int i = 1; i < 4; ++i) {
+      mn = mn.cwiseMin(pos[tets[t][i]]);
+      mx = mx.cwiseMax(pos[tets[t][i]]);
+    }
+    lo = cellOf(mn);
+    hi = cellOf(mx);
+  };
+  const std::size_t cellCount = std::size_t(dims_[0]) * dims_[1] * dims_[2];
+  cellStart_.assign(cellCount + 1, 0);
+  std::array<int, 3> lo, hi;
+  const auto forCells = [&](auto&& visit) {
+    for (int t = 0; t < static_cast<int>(tets.size()); ++t) {
+      cellRange(t, lo, hi);
+      for (int k = lo[2]; k <= hi[2]; ++k)
+        for (int j = lo[1]; j <= hi[1]; ++j)
+          for (int i = lo[0]; i <= hi[0]; ++i)
+            visit(t, (std::size_t(k) * dims_[1] + j) * dims_[0] + i);
+    }
+  };
+  forCells([&](int, std::size_t c) { ++cellStart_[c + 1]; });
+  for (std::size_t c = 0; c < cellCount; ++c) cellStart_[c + 1] += cellStart_[c];
+  cellTets_.resize(cellStart_.back());
+  std::vector<int> fill(cellStart_.begin(), cellStart_.end() - 1);
+  forCells([&](int t, std::size_t c) { cellTets_[fill[c]++] = t; });
+}
+
+std::array<int, 3> PointLocator::cellOf(const Vec3& p) const {
+  std::array<int, 3> c;
+  for (int a = 0; a < 3; ++a) {
+    c[a] = std::clamp(static_cast<int>(std::floor((p[a] - origin_[a]) / cellSize_)), 0,
+                      dims_[a] - 1);
+  }
+  return c;
+}
+
+std::optional<TetLocation> PointLocator::locate(const Vec3& p, double tolerance) const {
+  for (int a = 0; a < 3; ++a) {
+    const double margin = tolerance * cellSize_ * dims_[a];
+    if (p[a] < mesh_.boundsMin()[a] - margin || p[a] > mesh_.boundsMax()[a] + margin) return {};
+  }
+  const auto c = cellOf(p);
+  const std::size_t cell = (std::size_t(c[2]) * dims_[1] + c[1]) * dims_[0] + c[0];
+  std::optional<TetLocation> best;
+  double bestMin = -tolerance;
+  for (int k = cellStart_[cell]; k < cellStart_[cell + 1]; ++k) {
+    const int t = cellTets_[k];
+    const Eigen::Vector4d b = mesh_.barycentric(t, p);
+    const double m = b.minCoeff();
+    if (m >= bestMin && (!best || m > bestMin || t < best->tet)) {
+      bestMin = m;
+      best = TetLocation{t, b};
+    }
+  }
+  return best;
+}
+
+std::vector<std::optional<TetLocation>> PointLocator::locateAll(
+    const std::vector<Vec3>& points) const {
+  std::vector<std::optional<TetLocation>> out(points.size());
+  tbb::parallel_for(std::size_t(0), points.size(),
+                    [&](std::size_t i) { out[i] = locate(points[i]); });
+  return out;
+}
+
+}  // namespace tfd::core
