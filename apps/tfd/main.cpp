@@ -1,0 +1,40 @@
+// tfd — the tensor field designer's command line. Thin: builds the node registry, wires the
+// subcommands (one file each) to CLI11 and maps usage errors to exit code 2.
+#include <iostream>
+
+#include "apps/tfd/cli.h"
+#include "graph/version.h"
+#include "nodes/register_all.h"
+
+int main(int argc, char** argv) {
+  using namespace tfd;
+  graph::NodeRegistry registry;
+  try {
+    nodes::registerAll(registry);
+  } catch (const std::exception& e) {
+    cli::printError(std::string("internal error while registering node types: ") + e.what());
+    return cli::kUsage;
+  }
+  const cli::Context context{registry};
+
+  CLI::App app{"tfd — design 3D tensor fields with node graphs (Palacios et al. 2017).", "tfd"};
+  app.set_version_flag("--version", std::string("tfd ") + graph::toolVersion());
+  app.require_subcommand(1);
+  app.footer("Exit codes: 0 success, 1 a node failed, 2 usage or load error.");
+  int exitCode = cli::kOk;
+  cli::addCookCommand(app, context, exitCode);
+  cli::addValidateCommand(app, context, exitCode);
+  cli::addNodesCommand(app, context, exitCode);
+  cli::addInfoCommand(app, context, exitCode);
+  cli::addUpgradeCommand(app, context, exitCode);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::Success& e) {  // --help, --version
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    cli::printError(e.what());
+    std::cerr << "Run 'tfd --help' or 'tfd <command> --help' for usage.\n";
+    return cli::kUsage;
+  }
+  return exitCode;
+}

@@ -1,0 +1,93 @@
+// TetGen adapter benchmark: spheres of about 150K, 500K and 1M tets.
+// Reports per size: tet count reached, surface build time, TetGen time, TetMesh topology
+// build time (the constructor: validation, edges, faces, boundary, incidence, volumes), each
+// as wall-clock and as process CPU time (std::clock, all threads: robust on a busy machine),
+// and the peak resident memory of the run (VmHWM, reset before each size).
+// Run: build-<dir>/bench/tetgen_bench --benchmark_counters_tabular=true
+// Results and machine notes: bench/RESULTS-tetgen.md.
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <ctime>
+#include <fstream>
+#include <string>
+
+#include "core/primitives.h"
+#include "io/tetgen_mesher.h"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// Resets the peak resident set size of this process (Linux: "5" > /proc/self/clear_refs).
+void resetPeakMemory() { std::ofstream("/proc/self/clear_refs") << "5"; }
+
+/// Peak resident set size in MB since the last reset (VmHWM).
+double peakMemoryMb() {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line)) {
+    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;
+  }
+  return 0;
+}
+
+void BM_TetgenSphere(benchmark::State& state) {
+  const double target = double(state.range(0));
+  tfd::core::PrimitiveSpec spec;  // unit sphere
+  double surfaceSeconds = 0, tetgenSeconds = 0, topologySeconds = 0, peak = 0;
+  double tetgenCpu = 0, topologyCpu = 0;
+  std::size_t tets = 0, boundaryTriangles = 0;
+  for (auto _ : state) {
+    resetPeakMemory();
+    const auto t0 = Clock::now();
+    const tfd::core::SurfaceMesh surface = tfd::core::makePrimitiveForTets(spec, target);
+    const auto t1 = Clock::now();
+    // The adapter reports the stage "building the tet mesh topology" right after TetGen.
+    Clock::time_point tetgenDone = t1;
+    const std::clock_t c1 = std::clock();
+    std::clock_t cTetgenDone = c1;
+    tfd::core::Progress progress(
+        [&](double, std::string_view stage) {
+          if (stage == "building the tet mesh topology") {
+            tetgenDone = Clock::now();
+            cTetgenDone = std::clock();
+          }
+        },
+        nullptr);
+    tfd::io::TetgenOptions options;
+    options.targetTets = target;
+    const auto mesh = tfd::io::tetrahedralize(surface, options, progress);
+    const auto t2 = Clock::now();
+    const std::clock_t c2 = std::clock();
+    tetgenCpu = double(cTetgenDone - c1) / CLOCKS_PER_SEC;
+    topologyCpu = double(c2 - cTetgenDone) / CLOCKS_PER_SEC;
+    surfaceSeconds = std::chrono::duration<double>(t1 - t0).count();
+    tetgenSeconds = std::chrono::duration<double>(tetgenDone - t1).count();
+    topologySeconds = std::chrono::duration<double>(t2 - tetgenDone).count();
+    peak = peakMemoryMb();
+    tets = mesh->tetCount();
+    boundaryTriangles = surface.triangles.size();
+    benchmark::DoNotOptimize(mesh);
+  }
+  state.counters["tets"] = double(tets);
+  state.counters["tets/target"] = double(tets) / target;
+  state.counters["surface_tris"] = double(boundaryTriangles);
+  state.counters["surface_s"] = surfaceSeconds;
+  state.counters["tetgen_s"] = tetgenSeconds;
+  state.counters["topology_s"] = topologySeconds;
+  state.counters["tetgen_cpu_s"] = tetgenCpu;
+  state.counters["topology_cpu_s"] = topologyCpu;
+  state.counters["peak_MB"] = peak;
+}
+
+BENCHMARK(BM_TetgenSphere)
+    ->Arg(150'000)
+    ->Arg(500'000)
+    ->Arg(1'000'000)
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,127 @@
+#pragma once
+// Cooking a graph: pull-based, in dependency order, cached by content hash.
+//
+// cook() takes the requested nodes (default: every node whose outputs feed no link, i.e. the
+// sinks/exporters and dangling results, which together pull the whole graph) and their
+// upstream closure. Nodes whose key (node_keys.h) is in the cache are not cooked; the others
+// cook as soon as their inputs are ready, independent branches in parallel (TBB task_group).
+// Each node's outputs depend only on its parameters and inputs, so results are identical for
+// any thread count and schedule.
+//
+// Failures: any std::exception from a node's cook becomes that node's error (state Failed);
+// downstream nodes get state UpstreamFailed with the error "input 'field' failed upstream in
+// node \"X\"" and are not cooked; unrelated branches still cook. A required input without a
+// link fails its node ("required input 'mesh' is not connected").
+//
+// Cancellation: set *CookOptions::cancel. Nodes not yet started are skipped, a running node
+// sees CookContext::cancelFlag(); any node that finishes (normally or by throwing) while the
+// flag is set is marked Cancelled and its outputs are discarded, so the cache never holds a
+// result of an interrupted cook. Nodes that completed before the flag was set stay cached.
+#include <atomic>
+#include <cstddef>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "graph/graph.h"
+#include "graph/hash.h"
+#include "graph/node_message.h"
+#include "graph/value_cache.h"
+
+namespace tfd::graph {
+
+enum class NodeState {
+  NotRequested,    ///< outside the requested nodes' upstream closure
+  Cooked,          ///< cook ran and succeeded
+  Cached,          ///< result taken from the cache, cook not called
+  Failed,          ///< cook threw, or a required input is unconnected, or an output was not set
+  UpstreamFailed,  ///< an input's node failed; not cooked
+  Cancelled,       ///< cancelled before or while cooking; nothing kept
+};
+std::string_view stateName(NodeState state);
+
+struct NodeReport {
+  std::string node;
+  std::string type;
+  NodeState state = NodeState::NotRequested;
+  std::vector<NodeMessage> messages;  ///< for Cached: the messages of the cook that produced it
+  double seconds = 0;                 ///< wall time of this cook (Cached: of the original cook)
+  bool cookCalled = false;            ///< the node's cook function ran in this cook
+  Hash key;
+  std::string failedNode;          ///< UpstreamFailed: the node whose failure reached here
+  std::vector<Value> outputs;      ///< Cooked/Cached: in declaration order
+  const NodeDecl* decl = nullptr;  ///< the node type's declaration (owned by the registry)
+
+  bool hasError() const { return state == NodeState::Failed || state == NodeState::UpstreamFailed; }
+  bool hasWarnings() const;
+};
+
+struct CookResult {
+  std::vector<NodeReport> reports;  ///< the requested closure, upstream before downstream
+  bool cancelled = false;
+
+  const NodeReport* report(std::string_view node) const;
+  /// The value on node.port when that node was cooked or cached; empty otherwise.
+  Value output(std::string_view node, std::string_view port) const;
+  template <class T>
+  std::shared_ptr<const T> output(std::string_view node, std::string_view port) const {
+    return output(node, port).as<T>();
+  }
+  std::size_t count(NodeState state) const;
+  /// No node failed and nothing was cancelled.
+  bool ok() const;
+  bool hasWarnings() const;
+};
+
+/// Notified while cooking, from TBB worker threads, possibly concurrently: implementations
+/// must be thread-safe and must not throw.
+class CookObserver {
+ public:
+  virtual ~CookObserver() = default;
+  /// Before anything cooks: the number of requested nodes and how many were found cached.
+  virtual void cookStarted(std::size_t requested, std::size_t cached) {
+    (void)requested, (void)cached;
+  }
+  virtual void nodeStarted(const std::string& node, const std::string& type) {
+    (void)node, (void)type;
+  }
+  virtual void nodeProgress(const std::string& node, double fraction, std::string_view stage) {
+    (void)node, (void)fraction, (void)stage;
+  }
+  /// Every requested node once (cached ones first, before cooking starts).
+  virtual void nodeFinished(const NodeReport& report) { (void)report; }
+};
+
+struct CookOptions {
+  std::vector<std::string> targets{};  ///< nodes to cook with their upstream; empty: all leaves
+  std::filesystem::path outDir{};      ///< relative output files go here (default: graph folder)
+  std::filesystem::path baseDir{};     ///< relative input files (default: graph folder or cwd)
+  const std::atomic<bool>* cancel = nullptr;
+  CookObserver* observer = nullptr;
+  bool hashInputFileStamps = true;  ///< input files' size and mtime feed the cache key
+  bool parallel = true;             ///< false: one node at a time, in topological order
+};
+
+class Evaluator {
+ public:
+  static constexpr std::size_t kDefaultCacheBudget = std::size_t(2) << 30;  // 2 GiB
+
+  explicit Evaluator(std::size_t cacheBudgetBytes = kDefaultCacheBudget);
+
+  /// Throws GraphError for an unknown target; everything else is reported per node.
+  CookResult cook(const Graph& graph, const CookOptions& options = {});
+
+  /// The requested nodes (default: the whole graph) whose result is not cached, in
+  /// topological order: what the next cook() would compute. Does not change cache recency.
+  std::vector<std::string> dirtyNodes(const Graph& graph, const CookOptions& options = {}) const;
+
+  ValueCache& cache() { return cache_; }
+  const ValueCache& cache() const { return cache_; }
+
+ private:
+  ValueCache cache_;
+};
+
+}  // namespace tfd::graph

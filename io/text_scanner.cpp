@@ -1,0 +1,109 @@
+#include "io/text_scanner.h"
+
+#include <cctype>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+
+#include "core/error.h"
+
+namespace tfd::io {
+
+TextScanner::TextScanner(std::string_view text, std::string fileName, char comment,
+                         std::size_t offset, int firstLine)
+    : text_(text),
+      fileName_(std::move(fileName)),
+      comment_(comment),
+      next_(offset),
+      lineNumber_(firstLine - 1),
+      lastLine_(firstLine - 1) {}
+
+bool TextScanner::nextLine() {
+  while (next_ < text_.size()) {
+    const std::size_t end = text_.find('\n', next_);
+    std::string_view l = text_.substr(next_, end == std::string_view::npos ? end : end - next_);
+    next_ = end == std::string_view::npos ? text_.size() : end + 1;
+    ++lineNumber_;
+    lastLine_ = lineNumber_;
+    if (comment_ != 0) {
+      if (const std::size_t c = l.find(comment_); c != std::string_view::npos) l = l.substr(0, c);
+    }
+    if (!l.empty() && l.back() == '\r') l.remove_suffix(1);
+    line_ = l;
+    pos_ = 0;
+    if (!atLineEnd()) return true;
+  }
+  line_ = {};
+  pos_ = 0;
+  return false;
+}
+
+bool TextScanner::atLineEnd() {
+  while (pos_ < line_.size() && std::isspace(static_cast<unsigned char>(line_[pos_]))) ++pos_;
+  return pos_ >= line_.size();
+}
+
+std::string_view TextScanner::token() {
+  if (atLineEnd()) return {};
+  const std::size_t start = pos_;
+  while (pos_ < line_.size() && !std::isspace(static_cast<unsigned char>(line_[pos_]))) ++pos_;
+  return line_.substr(start, pos_ - start);
+}
+
+double TextScanner::number(std::string_view what) {
+  const std::string_view t = token();
+  double value;
+  if (!parseNumber(t, value)) {
+    fail("expected " + std::string(what) + " (a finite number), found " + describeToken(t));
+  }
+  return value;
+}
+
+long long TextScanner::integer(std::string_view what) {
+  const std::string_view t = token();
+  long long value;
+  if (!parseInteger(t, value)) {
+    fail("expected " + std::string(what) + " (an integer), found " + describeToken(t));
+  }
+  return value;
+}
+
+void TextScanner::expectLineEnd(std::string_view what) {
+  const std::size_t before = pos_;
+  const std::string_view t = token();
+  if (!t.empty()) fail("unexpected " + describeToken(t) + " after " + std::string(what));
+  pos_ = before;
+}
+
+void TextScanner::fail(const std::string& message) const {
+  throw core::Error("file '" + fileName_ + "', line " + std::to_string(lineNumber_) + ": " +
+                    message);
+}
+
+void TextScanner::failAtEnd(const std::string& message) const {
+  throw core::Error("file '" + fileName_ + "': " + message + " (file ended at line " +
+                    std::to_string(lastLine_) + ")");
+}
+
+bool parseNumber(std::string_view token, double& value) {
+  if (!token.empty() && token.front() == '+') token.remove_prefix(1);
+  if (token.empty()) return false;
+  const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
+  return ec == std::errc() && end == token.data() + token.size() && std::isfinite(value);
+}
+
+bool parseInteger(std::string_view token, long long& value) {
+  if (!token.empty() && token.front() == '+') token.remove_prefix(1);
+  if (token.empty()) return false;
+  const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
+  return ec == std::errc() && end == token.data() + token.size();
+}
+
+std::string describeToken(std::string_view token) {
+  if (token.empty()) return "the end of the line";
+  if (token.size() > 40) return "'" + std::string(token.substr(0, 40)) + "...'";
+  return "'" + std::string(token) + "'";
+}
+
+}  // namespace tfd::io

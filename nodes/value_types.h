@@ -1,0 +1,23 @@
+#pragma once
+// The graph value types of tfd's nodes, with their stable display names and approximate sizes
+// for the memory-bounded cook cache. Include this header in every node file.
+#include "core/design/design_element.h"
+#include "core/tensor_field.h"
+#include "core/tet_mesh.h"
+#include "core/topology/degenerate_curves.h"
+#include "graph/value.h"
+
+namespace tfd::nodes::detail {
+std::size_t meshBytes(const core::TetMesh& mesh);
+std::size_t fieldBytes(const core::TensorField& field);
+std::size_t constraintBytes(const core::ConstraintSet& set);
+std::size_t curvesBytes(const core::DegenerateCurves& curves);
+}  // namespace tfd::nodes::detail
+
+TFD_GRAPH_VALUE_TYPE_SIZED(tfd::core::TetMesh, "TetMesh", tfd::nodes::detail::meshBytes);
+TFD_GRAPH_VALUE_TYPE_SIZED(tfd::core::TensorField, "TensorField",
+                           tfd::nodes::detail::fieldBytes);
+TFD_GRAPH_VALUE_TYPE_SIZED(tfd::core::ConstraintSet, "Constraints",
+                           tfd::nodes::detail::constraintBytes);
+TFD_GRAPH_VALUE_TYPE_SIZED(tfd::core::DegenerateCurves, "DegenerateCurves",
+                           tfd::nodes::detail::curvesBytes);
