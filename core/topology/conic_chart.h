@@ -16,9 +16,7 @@ struct ConicChart {
   /// |λ2| / max|λ|: 0 for a line pair (the chart then does not exist).
   double conditioning = 0;
 
-  Vec3 at(double theta) const {
-    return qc + a * std::cos(theta) * q1 + b * std::sin(theta) * q2;
-  }
+  Vec3 at(double theta) const { return qc + a * std::cos(theta) * q1 + b * std::sin(theta) * q2; }
   /// Chart angle of a direction on the conic (either sign of v).
   double theta(const Vec3& v) const {
     const double sign = v.dot(qc) >= 0 ? 1.0 : -1.0;

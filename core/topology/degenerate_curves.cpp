@@ -70,9 +70,12 @@ const char* toString(CurveType type) { return type == CurveType::Linear ? "linea
 
 const char* toString(PointPattern pattern) {
   switch (pattern) {
-    case PointPattern::Wedge: return "wedge";
-    case PointPattern::Trisector: return "trisector";
-    case PointPattern::Transition: return "transition";
+    case PointPattern::Wedge:
+      return "wedge";
+    case PointPattern::Trisector:
+      return "trisector";
+    case PointPattern::Transition:
+      return "transition";
   }
   return "unknown";
 }
@@ -80,16 +83,15 @@ const char* toString(PointPattern pattern) {
 double DegenerateCurve::length() const {
   double total = 0;
   const std::size_t n = points.size();
-  for (std::size_t i = 0; i < segmentCount(); ++i) total += (points[(i + 1) % n] - points[i]).norm();
+  for (std::size_t i = 0; i < segmentCount(); ++i)
+    total += (points[(i + 1) % n] - points[i]).norm();
   return total;
 }
 
 DegenerateCurves::DegenerateCurves(std::vector<DegenerateCurve> curves,
                                    std::vector<std::string> warnings,
                                    ExtractionDiagnostics diagnostics)
-    : curves_(std::move(curves)),
-      warnings_(std::move(warnings)),
-      diagnostics_(diagnostics) {
+    : curves_(std::move(curves)), warnings_(std::move(warnings)), diagnostics_(diagnostics) {
   for (std::size_t i = 0; i < curves_.size(); ++i) {
     DegenerateCurve& c = curves_[i];
     const std::size_t n = c.points.size();
@@ -114,7 +116,8 @@ DegenerateCurves::DegenerateCurves(std::vector<DegenerateCurve> curves,
   for (DegenerateCurve& c : curves_) canonicalise(c, lexLess);
   std::stable_sort(curves_.begin(), curves_.end(),
                    [&](const DegenerateCurve& a, const DegenerateCurve& b) {
-                     if (a.points.empty() || b.points.empty()) return a.points.size() < b.points.size();
+                     if (a.points.empty() || b.points.empty())
+                       return a.points.size() < b.points.size();
                      if (lexLess(a.points.front(), b.points.front())) return true;
                      if (lexLess(b.points.front(), a.points.front())) return false;
                      if (lexLess(a.points.back(), b.points.back())) return true;
@@ -129,9 +132,12 @@ DegenerateCurves::DegenerateCurves(std::vector<DegenerateCurve> curves,
     ++(c.closed ? statistics_.closed : statistics_.open);
     statistics_.points += int(c.points.size());
     for (PointPattern p : c.patterns) {
-      if (p == PointPattern::Wedge) ++statistics_.wedgePoints;
-      else if (p == PointPattern::Trisector) ++statistics_.trisectorPoints;
-      else ++statistics_.transitionPoints;
+      if (p == PointPattern::Wedge)
+        ++statistics_.wedgePoints;
+      else if (p == PointPattern::Trisector)
+        ++statistics_.trisectorPoints;
+      else
+        ++statistics_.transitionPoints;
     }
   }
 }
@@ -169,8 +175,8 @@ std::optional<CurvePick> DegenerateCurves::pick(const Vec3& p) const {
       if (d2 < bestDistance2) {
         bestDistance2 = d2;
         const double len = std::sqrt(len2);
-        best = CurvePick{c.id, int(i), t, t <= 0.5 ? int(i) : int((i + 1) % n), arc + t * len,
-                         0, q};
+        best =
+            CurvePick{c.id, int(i), t, t <= 0.5 ? int(i) : int((i + 1) % n), arc + t * len, 0, q};
       }
       arc += std::sqrt(len2);
     }
@@ -186,15 +192,16 @@ std::string DegenerateCurves::summary() const {
     << " linear, " << st.planar << " planar; " << st.closed << " loop"
     << (st.closed == 1 ? "" : "s") << "), " << st.points << " points, " << st.transitionPoints
     << " transition point" << (st.transitionPoints == 1 ? "" : "s");
-  if (!warnings_.empty()) s << ", " << warnings_.size() << " warning" << (warnings_.size() == 1 ? "" : "s");
+  if (!warnings_.empty())
+    s << ", " << warnings_.size() << " warning" << (warnings_.size() == 1 ? "" : "s");
   return s.str();
 }
 
 std::size_t DegenerateCurves::byteSize() const {
   std::size_t bytes = sizeof(*this);
   for (const DegenerateCurve& c : curves_) {
-    bytes += sizeof(c) + c.points.size() * (3 * sizeof(Vec3) + sizeof(PointPattern) +
-                                            sizeof(PointSource));
+    bytes += sizeof(c) +
+             c.points.size() * (3 * sizeof(Vec3) + sizeof(PointPattern) + sizeof(PointSource));
   }
   for (const std::string& w : warnings_) bytes += sizeof(w) + w.size();
   return bytes;

@@ -19,7 +19,7 @@ enum class CurveType { Linear, Planar };
 /// 2-D pattern of the field projected on the degenerate plane at a curve point: wedge (index
 /// +½), trisector (−½), or a transition point between the two (tangent ⊥ eigenvector).
 enum class PointPattern { Wedge, Trisector, Transition };
-const char* toString(CurveType type);     ///< "linear" / "planar"
+const char* toString(CurveType type);        ///< "linear" / "planar"
 const char* toString(PointPattern pattern);  ///< "wedge" / "trisector" / "transition"
 
 /// Where a curve point came from: a mesh face (the usual case), an edge or a vertex (points
@@ -50,11 +50,11 @@ struct DegenerateCurve {
 /// Result of DegenerateCurves::pick: the nearest point of the nearest curve.
 struct CurvePick {
   int curveId = -1;
-  int segment = -1;     ///< segment from point `segment` to the next (wrapping on loops)
-  double t = 0;         ///< position along that segment in [0, 1]
-  int pointIndex = -1;  ///< the curve point nearest to the picked position
-  double arcLength = 0;  ///< distance along the curve from its first point
-  double distance = 0;  ///< from the query point to the curve
+  int segment = -1;              ///< segment from point `segment` to the next (wrapping on loops)
+  double t = 0;                  ///< position along that segment in [0, 1]
+  int pointIndex = -1;           ///< the curve point nearest to the picked position
+  double arcLength = 0;          ///< distance along the curve from its first point
+  double distance = 0;           ///< from the query point to the curve
   Vec3 position = Vec3::Zero();  ///< nearest position on the curve
 };
 
@@ -65,18 +65,18 @@ struct CurveStatistics {
 
 /// Counters of the extraction (for profiling, tests and the CLI's verbose output).
 struct ExtractionDiagnostics {
-  std::int64_t faces = 0;                  ///< unique faces of the mesh
-  std::int64_t facesCulledByGap = 0;       ///< proved clean by the eigen-gap test
+  std::int64_t faces = 0;                   ///< unique faces of the mesh
+  std::int64_t facesCulledByGap = 0;        ///< proved clean by the eigen-gap test
   std::int64_t facesCulledByBernstein = 0;  ///< proved clean by the Bernstein test
-  std::int64_t facesSolved = 0;            ///< faces given to the exact solver (all rounds)
-  std::int64_t facePoints = 0;             ///< degenerate points on faces (final)
-  std::int64_t perturbedVertices = 0;      ///< vertices moved by the non-generic fallback
-  int rounds = 0;                          ///< fallback rounds used (0: field was generic)
-  std::int64_t unresolvedFaces = 0;        ///< still non-generic after the last round
-  std::int64_t oddTets = 0;                ///< tets whose points could not all be paired
-  std::int64_t heuristicTets = 0;          ///< tets connected by nearest pairs, not the conic
-  std::int64_t danglingEnds = 0;           ///< open-curve ends not on the boundary
-  std::int64_t junctions = 0;              ///< points where more than two segments meet
+  std::int64_t facesSolved = 0;             ///< faces given to the exact solver (all rounds)
+  std::int64_t facePoints = 0;              ///< degenerate points on faces (final)
+  std::int64_t perturbedVertices = 0;       ///< vertices moved by the non-generic fallback
+  int rounds = 0;                           ///< fallback rounds used (0: field was generic)
+  std::int64_t unresolvedFaces = 0;         ///< still non-generic after the last round
+  std::int64_t oddTets = 0;                 ///< tets whose points could not all be paired
+  std::int64_t heuristicTets = 0;           ///< tets connected by nearest pairs, not the conic
+  std::int64_t danglingEnds = 0;            ///< open-curve ends not on the boundary
+  std::int64_t junctions = 0;               ///< points where more than two segments meet
 };
 
 /// Immutable set of degenerate curves. The constructor puts curves in a canonical order

@@ -4,8 +4,6 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <chrono> // TIMING
-#include <cstdio> // TIMING
 #include <cmath>
 #include <cstdint>
 #include <map>
@@ -25,8 +23,6 @@ namespace {
 
 using namespace topology;
 
-enum FaceStatus : std::uint8_t { kUntouched, kZero, kCulledGap, kCulledBernstein, kCandidate };
-
 constexpr std::size_t kFaceGrain = 4096;
 
 void checkOptions(const ExtractOptions& o) {
@@ -34,8 +30,9 @@ void checkOptions(const ExtractOptions& o) {
     throw Error("extract degenerate curves: option 'perturbation' must be in [0, 0.01], got " +
                 std::to_string(o.perturbation));
   if (o.maxPerturbationRounds < 0 || o.maxPerturbationRounds > 8)
-    throw Error("extract degenerate curves: option 'maxPerturbationRounds' must be in [0, 8], got " +
-                std::to_string(o.maxPerturbationRounds));
+    throw Error(
+        "extract degenerate curves: option 'maxPerturbationRounds' must be in [0, 8], got " +
+        std::to_string(o.maxPerturbationRounds));
   if (o.arcSamples < 0 || o.arcSamples > 64)
     throw Error("extract degenerate curves: option 'arcSamples' must be in [0, 64], got " +
                 std::to_string(o.arcSamples));
@@ -59,10 +56,10 @@ class Extractor {
         base_(mesh_.vertexCount()),
         working_(mesh_.vertexCount()),
         gap_(mesh_.vertexCount(), 0),
+        zero_(mesh_.vertexCount(), 0),
         level_(mesh_.vertexCount(), 0),
         changed_(mesh_.vertexCount(), 1),
-        faceSlot_(mesh_.faces().size(), -1),
-        status_(mesh_.faces().size(), kUntouched) {}
+        faceSlot_(mesh_.faces().size(), -1) {}
 
   DegenerateCurves run();
 
@@ -94,10 +91,10 @@ class Extractor {
   const Progress& progress_;
   std::vector<Tensor> base_, working_;
   std::vector<double> gap_;
+  std::vector<char> zero_;  ///< working tensor is exactly zero
   std::vector<int> level_;
   std::vector<char> changed_;
   std::vector<int> faceSlot_;
-  std::vector<std::uint8_t> status_;
   std::vector<FaceRecord> records_;
 
   // Rebuilt each round.
@@ -113,47 +110,46 @@ void Extractor::solveFaces(int round) {
   const auto& faces = mesh_.faces();
   const std::size_t faceCount = faces.size();
   // Stage 1: which faces to (re)solve. Round 0: all; later: faces touching changed vertices.
-  tbb::parallel_for(
-      tbb::blocked_range<std::size_t>(0, faceCount, kFaceGrain),
-      [&](const tbb::blocked_range<std::size_t>& r) {
-        if (progress_.cancelled()) return;
-        for (std::size_t f = r.begin(); f != r.end(); ++f) {
-          const auto& fv = faces[f];
-          if (round > 0 && !changed_[fv[0]] && !changed_[fv[1]] && !changed_[fv[2]]) {
-            status_[f] = kUntouched;
-            continue;
-          }
-          const Tensor* t[3] = {&working_[fv[0]], &working_[fv[1]], &working_[fv[2]]};
-          if (t[0]->norm() == 0 && t[1]->norm() == 0 && t[2]->norm() == 0) {
-            status_[f] = kZero;
-            continue;
-          }
-          if (options_.prefilter) {
-            const double g[3] = {gap_[fv[0]], gap_[fv[1]], gap_[fv[2]]};
-            if (gapExcludesFace(t, g)) {
-              status_[f] = kCulledGap;
-              continue;
-            }
-            if (bernsteinExcludesFace(*t[0], *t[1], *t[2])) {
-              status_[f] = kCulledBernstein;
-              continue;
-            }
-          }
-          status_[f] = kCandidate;
+  // Fixed chunks, each with its own candidate list, concatenated in chunk order.
+  const std::size_t chunks = (faceCount + kFaceGrain - 1) / kFaceGrain;
+  struct Chunk {
+    std::vector<int> candidates;
+    std::int64_t culledGap = 0, culledBernstein = 0, zero = 0;
+  };
+  std::vector<Chunk> chunk(chunks);
+  tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t c) {
+    if (progress_.cancelled()) return;
+    Chunk& out = chunk[c];
+    const std::size_t end = std::min(faceCount, (c + 1) * kFaceGrain);
+    for (std::size_t f = c * kFaceGrain; f != end; ++f) {
+      const auto& fv = faces[f];
+      if (round > 0 && !changed_[fv[0]] && !changed_[fv[1]] && !changed_[fv[2]]) continue;
+      if (zero_[fv[0]] && zero_[fv[1]] && zero_[fv[2]]) {
+        ++out.zero;
+        continue;
+      }
+      if (options_.prefilter) {
+        const Tensor* t[3] = {&working_[fv[0]], &working_[fv[1]], &working_[fv[2]]};
+        const double g[3] = {gap_[fv[0]], gap_[fv[1]], gap_[fv[2]]};
+        if (gapExcludesFace(t, g)) {
+          ++out.culledGap;
+          continue;
         }
-      });
+        if (bernsteinExcludesFace(*t[0], *t[1], *t[2])) {
+          ++out.culledBernstein;
+          continue;
+        }
+      }
+      out.candidates.push_back(int(f));
+    }
+  });
   progress_.throwIfCancelled();
 
   std::vector<int> candidates;
   std::int64_t culledGap = 0, culledBernstein = 0, zero = 0;
-  for (std::size_t f = 0; f < faceCount; ++f) {
-    switch (status_[f]) {
-      case kCandidate: candidates.push_back(int(f)); break;
-      case kCulledGap: ++culledGap; break;
-      case kCulledBernstein: ++culledBernstein; break;
-      case kZero: ++zero; break;
-      default: break;
-    }
+  for (const Chunk& c : chunk) {
+    candidates.insert(candidates.end(), c.candidates.begin(), c.candidates.end());
+    culledGap += c.culledGap, culledBernstein += c.culledBernstein, zero += c.zero;
   }
   if (round == 0) {
     diagnostics_.facesCulledByGap = culledGap;
@@ -170,24 +166,29 @@ void Extractor::solveFaces(int round) {
                       if (progress_.cancelled()) return;
                       for (std::size_t i = r.begin(); i != r.end(); ++i) {
                         const auto& fv = faces[candidates[i]];
-                        solutions[i] = solveFace(working_[fv[0]], working_[fv[1]],
-                                                 working_[fv[2]], solverOptions);
+                        solutions[i] = solveFace(working_[fv[0]], working_[fv[1]], working_[fv[2]],
+                                                 solverOptions);
                       }
                     });
   progress_.throwIfCancelled();
 
-  // Stage 3: update the sparse face records (serial, in face order).
-  std::size_t next = 0;
-  for (std::size_t f = 0; f < faceCount; ++f) {
-    if (status_[f] == kUntouched) continue;
-    FaceSolution solution;
-    if (next < candidates.size() && candidates[next] == int(f)) solution = solutions[next++];
-    const bool keep = solution.count > 0 || (solution.flags & kFaceNeedsFallback);
-    int& slot = faceSlot_[f];
-    if (keep) {
+  // Stage 3: update the sparse face records. Faces processed again but no longer candidates
+  // lose their old result; candidates store theirs (serial, in face order).
+  if (round > 0) {
+    for (FaceRecord& rec : records_) {
+      const auto& fv = faces[rec.face];
+      if ((changed_[fv[0]] || changed_[fv[1]] || changed_[fv[2]]) &&
+          !std::binary_search(candidates.begin(), candidates.end(), rec.face))
+        rec.solution = FaceSolution{};
+    }
+  }
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    const FaceSolution& solution = solutions[i];
+    int& slot = faceSlot_[candidates[i]];
+    if (solution.count > 0 || (solution.flags & kFaceNeedsFallback)) {
       if (slot < 0) {
         slot = int(records_.size());
-        records_.push_back({int(f), solution});
+        records_.push_back({candidates[i], solution});
       } else {
         records_[slot].solution = solution;
       }
@@ -202,7 +203,7 @@ void Extractor::buildNodes() {
   const auto& edges = mesh_.edges();
   const auto& positions = mesh_.positions();
   nodes_.clear();
-  std::vector<std::pair<int, int>> tetNode;  // (tet, node)
+  std::vector<std::pair<int, int>> tetNode;                      // (tet, node)
   std::map<int, std::vector<std::pair<double, int>>> edgeNodes;  // edge → (parameter, node)
   std::map<int, int> vertexNodes;
 
@@ -217,8 +218,7 @@ void Extractor::buildNodes() {
   const auto edgeTets = [&](int a, int b) {
     const auto ta = mesh_.vertexTets(a), tb = mesh_.vertexTets(b);
     std::vector<int> common;
-    std::set_intersection(ta.begin(), ta.end(), tb.begin(), tb.end(),
-                          std::back_inserter(common));
+    std::set_intersection(ta.begin(), ta.end(), tb.begin(), tb.end(), std::back_inserter(common));
     return common;
   };
   for (int index : order) {
@@ -303,26 +303,26 @@ void Extractor::connectTets() {
   connections_.assign(tetsWithNodes_.size(), TetConnection{});
   const auto& tets = mesh_.tets();
   const auto& positions = mesh_.positions();
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tetsWithNodes_.size(), 16),
-                    [&](const tbb::blocked_range<std::size_t>& r) {
-                      if (progress_.cancelled()) return;
-                      std::vector<TetNode> local;
-                      for (std::size_t i = r.begin(); i != r.end(); ++i) {
-                        const int t = tetsWithNodes_[i];
-                        const auto& tv = tets[t];
-                        const TetLinearField linear(
-                            {positions[tv[0]], positions[tv[1]], positions[tv[2]],
-                             positions[tv[3]]},
-                            {working_[tv[0]], working_[tv[1]], working_[tv[2]], working_[tv[3]]});
-                        local.clear();
-                        for (int k = tetStart_[i]; k < tetStart_[i + 1]; ++k) {
-                          const CurveNode& n = nodes_[tetNodeIds_[k]];
-                          local.push_back({tetNodeIds_[k], n.position, n.eigenvector,
-                                           n.source.kind == PointSource::Kind::Face});
-                        }
-                        connections_[i] = connectTet(linear, local, options_.arcSamples);
-                      }
-                    });
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, tetsWithNodes_.size(), 16),
+      [&](const tbb::blocked_range<std::size_t>& r) {
+        if (progress_.cancelled()) return;
+        std::vector<TetNode> local;
+        for (std::size_t i = r.begin(); i != r.end(); ++i) {
+          const int t = tetsWithNodes_[i];
+          const auto& tv = tets[t];
+          const TetLinearField linear(
+              {positions[tv[0]], positions[tv[1]], positions[tv[2]], positions[tv[3]]},
+              {working_[tv[0]], working_[tv[1]], working_[tv[2]], working_[tv[3]]});
+          local.clear();
+          for (int k = tetStart_[i]; k < tetStart_[i + 1]; ++k) {
+            const CurveNode& n = nodes_[tetNodeIds_[k]];
+            local.push_back({tetNodeIds_[k], n.position, n.eigenvector,
+                             n.source.kind == PointSource::Kind::Face});
+          }
+          connections_[i] = connectTet(linear, local, options_.arcSamples);
+        }
+      });
   progress_.throwIfCancelled();
 }
 
@@ -358,6 +358,7 @@ void Extractor::perturb(const std::vector<int>& vertices) {
     const int level = ++level_[v];
     working_[v] = base_[v] + vertexPerturbation(v, level, options_.perturbation, localScale(v));
     gap_[v] = degeneracyDistanceLowerBound(working_[v]);
+    zero_[v] = working_[v] == Tensor{};
     changed_[v] = 1;
   }
 }
@@ -366,12 +367,20 @@ DegenerateCurves Extractor::run() {
   diagnostics_.faces = std::int64_t(mesh_.faces().size());
   forVertices([&](std::size_t v) { base_[v] = field_.at(int(v)).deviator(); });
   double maxNorm = 0;
-  for (const Tensor& t : base_) maxNorm = std::max(maxNorm, t.norm());
+  for (std::size_t v = 0; v < base_.size(); ++v) {
+    const double n = base_[v].norm();
+    if (!std::isfinite(n)) {
+      const Vec3& p = mesh_.positions()[v];
+      throw Error("extract degenerate curves: the field is not finite at vertex " +
+                  std::to_string(v) + " (" + std::to_string(p.x()) + ", " + std::to_string(p.y()) +
+                  ", " + std::to_string(p.z()) + ")");
+    }
+    maxNorm = std::max(maxNorm, n);
+  }
   if (maxNorm == 0) {
     return DegenerateCurves({}, {"the field is zero everywhere: no degenerate curves"},
                             diagnostics_);
   }
-  if (!std::isfinite(maxNorm)) throw Error("extract degenerate curves: the field has non-finite values");
   double maxDifference = 0;
   for (const Tensor& t : base_) maxDifference = std::max(maxDifference, (t - base_[0]).norm());
   if (maxDifference <= 1e-12 * maxNorm) {
@@ -385,20 +394,18 @@ DegenerateCurves Extractor::run() {
         diagnostics_);
   }
   working_ = base_;
-  forVertices([&](std::size_t v) { gap_[v] = degeneracyDistanceLowerBound(working_[v]); });
+  forVertices([&](std::size_t v) {
+    gap_[v] = degeneracyDistanceLowerBound(working_[v]);
+    zero_[v] = working_[v] == Tensor{};
+  });
 
   const int maxRounds = options_.perturbation > 0 ? options_.maxPerturbationRounds : 0;
   for (int round = 0;; ++round) {
     progress_.report(0.1 + 0.8 * round / (maxRounds + 1), "degenerate points on faces");
-    auto T0 = std::chrono::steady_clock::now();
     solveFaces(round);
-    auto T1 = std::chrono::steady_clock::now();
     buildNodes();
-    auto T2 = std::chrono::steady_clock::now();
     progress_.report(0.1 + 0.8 * (round + 0.5) / (maxRounds + 1), "connecting points in tets");
     connectTets();
-    auto T3 = std::chrono::steady_clock::now();
-    if (getenv("TFD_TOPO_TIMING")) fprintf(stderr, "TIMING faces %.3f nodes %.3f tets %.3f\n", std::chrono::duration<double>(T1-T0).count(), std::chrono::duration<double>(T2-T1).count(), std::chrono::duration<double>(T3-T2).count());
     diagnostics_.rounds = round;
     if (round >= maxRounds) break;
     const std::vector<int> flagged = flaggedVertices();
@@ -421,10 +428,8 @@ DegenerateCurves Extractor::finish() {
       segments.push_back({s.from, s.to, tetsWithNodes_[i], s.arc});
   }
   std::int64_t unresolved = 0;
-  for (const FaceRecord& rec : records_) {
+  for (const FaceRecord& rec : records_)
     unresolved += (rec.solution.flags & kFaceNeedsFallback) != 0;
-    if (getenv("TFD_TOPO_TIMING") && (rec.solution.flags & kFaceNeedsFallback)) fprintf(stderr, "FLAG face %d flags %u count %d\n", rec.face, rec.solution.flags, rec.solution.count); // TIMING
-  }
   for (int l : level_) diagnostics_.perturbedVertices += l > 0;
   diagnostics_.unresolvedFaces = unresolved;
   diagnostics_.oddTets = odd;

@@ -43,8 +43,7 @@ namespace {
 /// F(x) = min_k (|x − P_k|² − r_k²) is a minimum of convex paraboloids, so its maximum over the
 /// triangle lies at a corner, at an edge point where two of the power functions are equal, or
 /// at the interior point where all three are (power-diagram vertices); cover iff F < 0 there.
-bool ballsCoverTriangle(const double px[3], const double py[3], const double r2[3],
-                        double margin) {
+bool ballsCoverTriangle(const double px[3], const double py[3], const double r2[3], double margin) {
   const auto power = [&](double x, double y) {
     double f = std::numeric_limits<double>::infinity();
     for (int k = 0; k < 3; ++k) {
@@ -74,8 +73,10 @@ bool ballsCoverTriangle(const double px[3], const double py[3], const double r2[
   // Radical centre: h_0 = h_1 = h_2 (2x2 linear system).
   const double a11 = 2 * (px[1] - px[0]), a12 = 2 * (py[1] - py[0]);
   const double a21 = 2 * (px[2] - px[0]), a22 = 2 * (py[2] - py[0]);
-  const double b1 = (px[1] * px[1] + py[1] * py[1] - r2[1]) - (px[0] * px[0] + py[0] * py[0] - r2[0]);
-  const double b2 = (px[2] * px[2] + py[2] * py[2] - r2[2]) - (px[0] * px[0] + py[0] * py[0] - r2[0]);
+  const double b1 =
+      (px[1] * px[1] + py[1] * py[1] - r2[1]) - (px[0] * px[0] + py[0] * py[0] - r2[0]);
+  const double b2 =
+      (px[2] * px[2] + py[2] * py[2] - r2[2]) - (px[0] * px[0] + py[0] * py[0] - r2[0]);
   const double det = a11 * a22 - a12 * a21;
   if (det != 0) {
     const double cx = (b1 * a22 - b2 * a12) / det, cy = (a11 * b2 - a21 * b1) / det;
@@ -136,12 +137,12 @@ bool bernsteinExcludesFace(const Tensor& a0, const Tensor& b0, const Tensor& c0)
         6 * fa[k],
         6 * fb[k],
         6 * fc[k],
-        fabP[k] - fabM[k] - 2 * fb[k],  // C(a,a,b)
-        fabP[k] + fabM[k] - 2 * fa[k],  // C(a,b,b)
-        fbcP[k] - fbcM[k] - 2 * fc[k],  // C(b,b,c)
-        fbcP[k] + fbcM[k] - 2 * fb[k],  // C(b,c,c)
-        facP[k] - facM[k] - 2 * fc[k],  // C(a,a,c)
-        facP[k] + facM[k] - 2 * fa[k],  // C(a,c,c)
+        fabP[k] - fabM[k] - 2 * fb[k],                                  // C(a,a,b)
+        fabP[k] + fabM[k] - 2 * fa[k],                                  // C(a,b,b)
+        fbcP[k] - fbcM[k] - 2 * fc[k],                                  // C(b,b,c)
+        fbcP[k] + fbcM[k] - 2 * fb[k],                                  // C(b,c,c)
+        facP[k] - facM[k] - 2 * fc[k],                                  // C(a,a,c)
+        facP[k] + facM[k] - 2 * fa[k],                                  // C(a,c,c)
         fabc[k] - fabP[k] - fbcP[k] - facP[k] + fa[k] + fb[k] + fc[k],  // C(a,b,c)
     };
     bool allPositive = true, allNegative = true;

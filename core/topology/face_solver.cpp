@@ -14,16 +14,15 @@ namespace {
 using Mat53 = Eigen::Matrix<double, 5, 3>;
 using Mat5 = Eigen::Matrix<double, 5, 5>;
 
-constexpr double kRankTolerance = 1e-10;    // relative, on unit-normalised columns
-constexpr double kPencilTolerance = 1e-10;  // |mode| of the best pencil member
-constexpr double kDuplicateTolerance = 1e-8;    // barycentric distance of merged roots
+constexpr double kRankTolerance = 1e-10;      // relative, on unit-normalised columns
+constexpr double kPencilTolerance = 1e-10;    // |mode| of the best pencil member
+constexpr double kDuplicateTolerance = 1e-8;  // barycentric distance of merged roots
 
 /// g(θ) = A0 + A1 cos θ + B1 sin θ + A2 cos 2θ + B2 sin 2θ.
 struct TrigQuadratic {
   double a0, a1, b1, a2, b2;
   double value(double t) const {
-    return a0 + a1 * std::cos(t) + b1 * std::sin(t) + a2 * std::cos(2 * t) +
-           b2 * std::sin(2 * t);
+    return a0 + a1 * std::cos(t) + b1 * std::sin(t) + a2 * std::cos(2 * t) + b2 * std::sin(2 * t);
   }
   double derivative(double t) const {
     return -a1 * std::sin(t) + b1 * std::cos(t) - 2 * a2 * std::sin(2 * t) +
@@ -66,8 +65,7 @@ bool polish(const Vec5& t0, const Vec5& t1, const Vec5& t2, double& s, double& t
     if (!(residual <= bestResidual * 1.5 + 1e-15)) break;  // diverging: keep the last good one
     s = ns, t = nt, sigma = nsigma, v = nv;
     bestResidual = std::min(bestResidual, residual);
-    if (dx.norm() < 1e-15 * (1 + std::abs(s) + std::abs(t) + std::abs(sigma)) ||
-        residual < 1e-16)
+    if (dx.norm() < 1e-15 * (1 + std::abs(s) + std::abs(t) + std::abs(sigma)) || residual < 1e-16)
       break;
   }
   return bestResidual < 1e-12;

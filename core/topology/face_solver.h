@@ -28,7 +28,7 @@ namespace tfd::core::topology {
 
 /// One degenerate point on a face.
 struct FacePoint {
-  Vec3 barycentric = Vec3::Zero();  ///< weights of the corners (a, b, c), summing to 1
+  Vec3 barycentric = Vec3::Zero();   ///< weights of the corners (a, b, c), summing to 1
   Vec3 eigenvector = Vec3::UnitZ();  ///< unit non-degenerate eigenvector v
   double sigma = 0;  ///< A = σ b(v) in units of the face scale: σ > 0 linear, σ < 0 planar
 };
@@ -42,8 +42,8 @@ enum FaceFlag : unsigned {
   kFaceNearEdge = 1u << 4,          ///< a point lies on an edge or corner within tolerance
   kFacePolishFailed = 1u << 5,      ///< Newton polishing did not converge for a point
 };
-inline constexpr unsigned kFaceNeedsFallback = kFaceRankDeficient | kFaceDegeneratePencil |
-                                               kFaceTangency | kFaceNearEdge | kFacePolishFailed;
+inline constexpr unsigned kFaceNeedsFallback =
+    kFaceRankDeficient | kFaceDegeneratePencil | kFaceTangency | kFaceNearEdge | kFacePolishFailed;
 
 struct FaceSolution {
   std::array<FacePoint, 4> points{};

@@ -91,8 +91,10 @@ ArcClassification classifyArc(const TetConic& conic, double thetaStart, double t
       for (int it = 0; it < 60 && hi - lo > 1e-13 * std::max(1.0, std::abs(hi)); ++it) {
         const double mid = 0.5 * (lo + hi);
         const double fm = cosineAt(mid);
-        if ((fm > 0) == (flo > 0) && fm != 0) lo = mid, flo = fm;
-        else hi = mid;
+        if ((fm > 0) == (flo > 0) && fm != 0)
+          lo = mid, flo = fm;
+        else
+          hi = mid;
       }
       out.interior.push_back(makePoint(0.5 * (lo + hi), true));
     }

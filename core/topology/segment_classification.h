@@ -35,7 +35,7 @@ struct ArcPoint {
 };
 
 struct ArcClassification {
-  PatternSample start, end;  ///< one-sided, tangents oriented from start to end
+  PatternSample start, end;        ///< one-sided, tangents oriented from start to end
   std::vector<ArcPoint> interior;  ///< ordered from start to end
 };
 

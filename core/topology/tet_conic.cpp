@@ -60,9 +60,9 @@ ConicPoint TetConic::point(double theta) const {
   ConicPoint p;
   if (!valid_) return p;
   const Vec3 v = chart_.at(theta);
-  const Eigen::Vector4d x =
-      r_.triangularView<Eigen::Upper>().solve(q_.transpose() * veronese(v)).cwiseQuotient(
-          columnNorms_);
+  const Eigen::Vector4d x = r_.triangularView<Eigen::Upper>()
+                                .solve(q_.transpose() * veronese(v))
+                                .cwiseQuotient(columnNorms_);
   if (!(std::abs(x[0]) > 1e-13 * x.norm())) return p;
   p.finite = true;
   p.position = field_.centre + field_.size * Vec3(x[1], x[2], x[3]) / x[0];

@@ -18,12 +18,12 @@ namespace tfd::core::topology {
 /// The linear interpolant of four corner tensors, in the tet's local coordinates.
 struct TetLinearField {
   Vec3 centre = Vec3::Zero();
-  double size = 1;   ///< largest corner distance from the centre
-  double scale = 0;  ///< largest corner Frobenius norm (0: zero field)
-  Vec5 value = Vec5::Zero();               ///< A(centre) / scale
-  std::array<Vec5, 3> gradient{};          ///< ∂A/∂q_k / scale
-  Mat3 toBarycentric = Mat3::Identity();   ///< λ1..3 = toBarycentric (q − q0)
-  Vec3 q0 = Vec3::Zero();                  ///< local coordinates of corner 0
+  double size = 1;                        ///< largest corner distance from the centre
+  double scale = 0;                       ///< largest corner Frobenius norm (0: zero field)
+  Vec5 value = Vec5::Zero();              ///< A(centre) / scale
+  std::array<Vec5, 3> gradient{};         ///< ∂A/∂q_k / scale
+  Mat3 toBarycentric = Mat3::Identity();  ///< λ1..3 = toBarycentric (q − q0)
+  Vec3 q0 = Vec3::Zero();                 ///< local coordinates of corner 0
 
   TetLinearField(const std::array<Vec3, 4>& corners, const std::array<Tensor, 4>& tensors);
   Vec3 local(const Vec3& p) const { return (p - centre) / size; }

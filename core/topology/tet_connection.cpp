@@ -8,8 +8,7 @@
 namespace tfd::core::topology {
 namespace {
 
-void pairGreedily(const TetLinearField& field, std::span<const TetNode> nodes,
-                  TetConnection& out) {
+void pairGreedily(const TetLinearField& field, std::span<const TetNode> nodes, TetConnection& out) {
   std::vector<bool> used(nodes.size(), false);
   while (true) {
     int bi = -1, bj = -1;

@@ -47,9 +47,7 @@ inline Mat3 matrixOf(const Vec5& n) {
 }
 
 /// Tensor with coordinates n.
-inline Tensor tensorOf(const Vec5& n) {
-  return Tensor::fromVec5({n[0], n[1], n[2], n[3], n[4]});
-}
+inline Tensor tensorOf(const Vec5& n) { return Tensor::fromVec5({n[0], n[1], n[2], n[3], n[4]}); }
 
 /// vec(b(v)) with b(v) = v vᵀ − |v|² I/3: homogeneous quadratic, b(−v) = b(v).
 inline Vec5 veronese(const Vec3& v) {

@@ -26,7 +26,8 @@ int cubicRealRoots(const double d[4], double out[3]) {
     out[2] = s * std::cos((t - 2 * std::numbers::pi) / 3) - p / 3;
     n = 3;
   } else {
-    const double a = -std::copysign(std::cbrt(std::abs(rr) + std::sqrt(rr * rr - qq * qq * qq)), rr);
+    const double a =
+        -std::copysign(std::cbrt(std::abs(rr) + std::sqrt(rr * rr - qq * qq * qq)), rr);
     const double b = a != 0 ? qq / a : 0;
     out[0] = a + b - p / 3;
     n = 1;
@@ -51,12 +52,15 @@ double bracketedRoot(const double c[5], double lo, double hi, double flo) {
   for (int it = 0; it < 200; ++it) {
     const double f = poly(c, 4, x);
     if (f == 0) return x;
-    if ((f > 0) == (flo > 0)) lo = x, flo = f;
-    else hi = x;
+    if ((f > 0) == (flo > 0))
+      lo = x, flo = f;
+    else
+      hi = x;
     const double fp = poly(d, 3, x);
     double next = fp != 0 ? x - f / fp : 0.5 * (lo + hi);
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-    if (std::abs(next - x) <= 1e-16 * std::max(1.0, std::abs(x)) || hi - lo <= 1e-16 * std::max(1.0, std::abs(x))) {
+    if (std::abs(next - x) <= 1e-16 * std::max(1.0, std::abs(x)) ||
+        hi - lo <= 1e-16 * std::max(1.0, std::abs(x))) {
       return next;
     }
     x = next;

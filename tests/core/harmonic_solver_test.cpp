@@ -253,7 +253,12 @@ TEST(HarmonicSolver, BadInputIsAClearError) {
   const HarmonicSolver solver(mesh, boundaryMask(*mesh));
   EXPECT_THROW(solver.solve(std::vector<Tensor>(5)), Error);
   std::vector<Tensor> values(mesh->vertexCount());
-  values[0].xx = std::nan("");
+  int interior = 0;
+  while (mesh->isBoundaryVertex(interior)) ++interior;
+  values[interior].xx = std::nan("");  // a free vertex's initial guess
+  EXPECT_THROW(solver.solve(values), Error);
+  values[interior].xx = 0;
+  values[mesh->boundaryVertices()[0]].yz = INFINITY;  // a fixed value the solve reads
   EXPECT_THROW(solver.solve(values), Error);
   std::vector<double> columns(mesh->vertexCount() * 7);
   EXPECT_THROW(solver.solveColumns(columns, 7), Error);

@@ -57,8 +57,8 @@ void checkStraightCurve(const AnalyticCase& c, std::shared_ptr<const TetMesh> me
   int matching = 0;
   for (std::size_t i = 0; i < curve.points.size(); ++i) {
     EXPECT_LT(distanceToLine(curve.points[i], c.point, c.direction), h);
-    EXPECT_NE(curve.patterns[i], c.pattern == PointPattern::Wedge ? PointPattern::Trisector
-                                                                   : PointPattern::Wedge);
+    EXPECT_NE(curve.patterns[i],
+              c.pattern == PointPattern::Wedge ? PointPattern::Trisector : PointPattern::Wedge);
     matching += curve.patterns[i] == c.pattern;
   }
   EXPECT_GT(matching, int(curve.points.size()) * 9 / 10);
@@ -71,8 +71,8 @@ void checkStraightCurve(const AnalyticCase& c, std::shared_ptr<const TetMesh> me
 
 const std::vector<AnalyticCase>& analyticCases() {
   static const std::vector<AnalyticCase> cases = {
-      {"F1 L-wedge", f1Wedge, Vec3::Zero(), Vec3::UnitZ(), CurveType::Linear,
-       PointPattern::Wedge, 1},
+      {"F1 L-wedge", f1Wedge, Vec3::Zero(), Vec3::UnitZ(), CurveType::Linear, PointPattern::Wedge,
+       1},
       {"F1 L-trisector", f1Trisector, Vec3::Zero(), Vec3::UnitZ(), CurveType::Linear,
        PointPattern::Trisector, 1},
       {"F3 P-wedge", f3Wedge, Vec3::Zero(), Vec3::UnitZ(), CurveType::Planar, PointPattern::Wedge,
@@ -270,7 +270,8 @@ TEST(TopologyExtract, FieldVanishingOnARegionDoesNotCrash) {
   const DegenerateCurves curves = extractDegenerateCurves(testing::sampleField(
       mesh, [](const Vec3& p) { return p.x() < 0 ? Tensor{} : f1Wedge(p + Vec3(-0.5, 0, 0)); }));
   bool mentionsZero = false;
-  for (const auto& w : curves.warnings()) mentionsZero = mentionsZero || w.find("vanishes") != std::string::npos;
+  for (const auto& w : curves.warnings())
+    mentionsZero = mentionsZero || w.find("vanishes") != std::string::npos;
   EXPECT_TRUE(mentionsZero);
   for (const DegenerateCurve& c : curves.curves()) EXPECT_EQ(c.points.size(), c.patterns.size());
 }
@@ -285,6 +286,18 @@ TEST(TopologyExtract, InvalidOptionsNameTheOption) {
     FAIL();
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("arcSamples"), std::string::npos);
+  }
+}
+
+TEST(TopologyExtract, NonFiniteFieldNamesTheVertex) {
+  const auto mesh = makeBoxMesh(2, 2, 2, Vec3::Zero(), Vec3::Ones());
+  std::vector<Tensor> values(mesh->vertexCount(), Tensor{1, -1, 0, 0.3, 0, 0});
+  values[5].xy = std::nan("");
+  try {
+    extractDegenerateCurves(TensorField(mesh, values));
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("vertex 5"), std::string::npos) << e.what();
   }
 }
 

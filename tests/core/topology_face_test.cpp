@@ -118,7 +118,8 @@ TEST(TopologyTrigRoots, TrigonometricRootsIncludingThetaPi) {
     for (int k = 0; k < n; ++k) EXPECT_LT(std::abs(g(roots[k].theta)), 1e-12);
     constexpr int kScan = 4000;
     for (int s = 0; s < kScan; ++s) {
-      const double t0 = 2 * std::numbers::pi * s / kScan, t1 = 2 * std::numbers::pi * (s + 1) / kScan;
+      const double t0 = 2 * std::numbers::pi * s / kScan,
+                   t1 = 2 * std::numbers::pi * (s + 1) / kScan;
       if ((g(t0) > 0) == (g(t1) > 0)) continue;
       bool found = false;
       for (int k = 0; k < n; ++k) {
@@ -169,7 +170,8 @@ TEST(TopologyFaceSolver, FindsEveryPointTheBruteForceSearchFinds) {
     // Brute force may miss points but never invents them; the solver must find each one.
     for (const Vec3& t : truth) {
       bool found = false;
-      for (int k = 0; k < s.count; ++k) found = found || (s.points[k].barycentric - t).norm() < 1e-6;
+      for (int k = 0; k < s.count; ++k)
+        found = found || (s.points[k].barycentric - t).norm() < 1e-6;
       EXPECT_TRUE(found) << "face " << face << " misses brute-force point " << t.transpose();
     }
     EXPECT_GE(s.count, int(truth.size()));
@@ -203,9 +205,7 @@ TEST(TopologyFaceSolver, PerturbedBlockDiagonalFaceIsSolvedAccurately) {
   int found = 0;
   for (int face = 0; face < 60; ++face) {
     // Block-diagonal field x-linear around the degenerate axis x = y = 0: A = diag-block.
-    const auto blockField = [](double x, double y) {
-      return Tensor{x - 1, -x - 1, 2, y, 0, 0};
-    };
+    const auto blockField = [](double x, double y) { return Tensor{x - 1, -x - 1, 2, y, 0, 0}; };
     std::uniform_real_distribution<double> u(-0.3, 0.3);
     const Vec3 pa(u(rng), u(rng), 0), pb(u(rng), u(rng), 0), pc(u(rng), u(rng), 0);
     const Tensor a = blockField(pa.x(), pa.y()) + randomTraceless(rng, 1e-7);
@@ -281,8 +281,10 @@ TEST(TopologyFacePrefilter, DistanceBoundIsBelowTheTrueDistance) {
     EXPECT_GT(bound, exact - 1e-6 * t.norm());
     // A degenerate tensor at that distance exists: average the closest pair.
     Vec3 l = e.values;
-    if (l[0] - l[1] < l[1] - l[2]) l[0] = l[1] = (l[0] + l[1]) / 2;
-    else l[1] = l[2] = (l[1] + l[2]) / 2;
+    if (l[0] - l[1] < l[1] - l[2])
+      l[0] = l[1] = (l[0] + l[1]) / 2;
+    else
+      l[1] = l[2] = (l[1] + l[2]) / 2;
     const Mat3 d = e.vectors * l.asDiagonal() * e.vectors.transpose();
     EXPECT_NEAR((d - t.matrix()).norm(), exact, 1e-12);
     EXPECT_LT(testing::scaledDiscriminant(Tensor::fromMatrix(d)), 1e-20);

@@ -12,6 +12,7 @@
 
 #include "core/topology/extract_degenerate_curves.h"
 #include "core/topology/traceless5.h"
+#include "io/tetgen_mesher.h"
 #include "tests/core/topology_test_support.h"
 
 namespace tfd::core::topology {
@@ -141,6 +142,33 @@ TEST(TopologyLinearField, PointsLieExactlyOnTheCurveWithTheRightTypeAndPattern) 
               pointsChecked, transitions);
 }
 
+TEST(TopologyLinearField, ExactOnATetGenSphere) {
+  const auto mesh = io::meshPrimitive("sphere", 20000);
+  int points = 0;
+  for (unsigned seed = 50; seed < 54; ++seed) {
+    std::mt19937_64 rng(seed);
+    const LinearField lf = testing::randomLinearField(rng);
+    const ExactCurve exact(lf);
+    const DegenerateCurves curves = extractDegenerateCurves(testing::sampleField(mesh, lf));
+    EXPECT_TRUE(curves.warnings().empty()) << curves.warnings()[0];
+    for (const DegenerateCurve& c : curves.curves()) {
+      EXPECT_FALSE(c.closed);
+      // Open curves end on the sphere.
+      EXPECT_NEAR(c.points.front().norm(), 1, 0.02);
+      EXPECT_NEAR(c.points.back().norm(), 1, 0.02);
+      for (std::size_t i = 0; i < c.points.size(); ++i) {
+        Vec3 p;
+        double sigma;
+        ASSERT_TRUE(exact.point(c.eigenvectors[i], p, sigma));
+        EXPECT_LT((p - c.points[i]).norm(), 2e-9);
+        EXPECT_EQ(sigma > 0, c.type == CurveType::Linear);
+        ++points;
+      }
+    }
+  }
+  EXPECT_GT(points, 100);
+}
+
 TEST(TopologyLinearField, TransitionPointsAreWhereTheTangentIsPerpendicular) {
   int found = 0;
   for (unsigned seed = 20; seed < 40 && found < 5; ++seed) {
@@ -151,7 +179,8 @@ TEST(TopologyLinearField, TransitionPointsAreWhereTheTangentIsPerpendicular) {
     const DegenerateCurves curves = extractDegenerateCurves(testing::sampleField(mesh, lf));
     for (const DegenerateCurve& c : curves.curves()) {
       for (std::size_t i = 0; i < c.points.size(); ++i) {
-        if (c.patterns[i] != PointPattern::Transition || c.sources[i].kind != PointSource::Kind::Tet)
+        if (c.patterns[i] != PointPattern::Transition ||
+            c.sources[i].kind != PointSource::Kind::Tet)
           continue;
         // At a transition point the tangent is perpendicular to the eigenvector and the
         // pattern changes between its neighbours.

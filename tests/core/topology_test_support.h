@@ -50,9 +50,7 @@ inline TensorField sampleField(std::shared_ptr<const TetMesh> mesh, const Tensor
 struct LinearField {
   Tensor a0;
   std::array<Tensor, 3> g;
-  Tensor operator()(const Vec3& p) const {
-    return a0 + p.x() * g[0] + p.y() * g[1] + p.z() * g[2];
-  }
+  Tensor operator()(const Vec3& p) const { return a0 + p.x() * g[0] + p.y() * g[1] + p.z() * g[2]; }
 };
 
 inline LinearField randomLinearField(std::mt19937_64& rng) {

@@ -1,11 +1,11 @@
 // Curve writers: the JSON schema other tools read, VTK PolyData for ParaView, OBJ lines.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
-#include <unistd.h>
 
 #include "core/error.h"
 #include "io/curve_writers.h"
@@ -21,8 +21,8 @@ using core::PointPattern;
 using core::Vec3;
 
 std::filesystem::path tempDir() {
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("tfd_curve_writers_" + std::to_string(::getpid()));
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("tfd_curve_writers_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   return dir;
 }
