@@ -142,9 +142,17 @@ void writeCurvesObj(const std::filesystem::path& path, const DegenerateCurves& c
   std::size_t base = 1;
   for (const core::DegenerateCurve& c : curves.curves()) {
     const std::size_t n = c.points.size();
-    s += "o curve_" + std::to_string(c.id) + "_" + core::toString(c.type) + "\nl";
-    for (std::size_t i = 0; i < n; ++i) s += " " + std::to_string(base + i);
-    if (c.closed && n > 1) s += " " + std::to_string(base);
+    s += "o curve_";
+    s += std::to_string(c.id);
+    s += '_';
+    s += core::toString(c.type);
+    s += "\nl";
+    const auto index = [&](std::size_t i) {
+      s += ' ';
+      s += std::to_string(i);
+    };
+    for (std::size_t i = 0; i < n; ++i) index(base + i);
+    if (c.closed && n > 1) index(base);
     s += '\n';
     base += n;
   }

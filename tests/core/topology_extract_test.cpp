@@ -121,8 +121,12 @@ TEST(TopologyExtract, TiltedCircleIsOneLoopWithTwoTransitions) {
     const Vec3& p = c.points[i];
     EXPECT_NEAR(std::hypot(p.x(), p.y()), 0.5, h);
     EXPECT_NEAR(p.z(), 0.3 * p.x(), h);
-    if (p.y() > h) EXPECT_EQ(c.patterns[i], PointPattern::Wedge) << p.transpose();
-    if (p.y() < -h) EXPECT_EQ(c.patterns[i], PointPattern::Trisector) << p.transpose();
+    if (p.y() > h) {
+      EXPECT_EQ(c.patterns[i], PointPattern::Wedge) << p.transpose();
+    }
+    if (p.y() < -h) {
+      EXPECT_EQ(c.patterns[i], PointPattern::Trisector) << p.transpose();
+    }
     if (c.patterns[i] == PointPattern::Transition) transitions.push_back(p);
   }
   ASSERT_GE(transitions.size(), 2u);
@@ -349,8 +353,9 @@ TEST(TopologyExtract, CanonicalOrderDoesNotDependOnInputOrder) {
   EXPECT_EQ(one.curve(0).patterns[0], PointPattern::Transition);
   EXPECT_EQ(one.statistics().closed, 1);
   EXPECT_EQ(one.statistics().transitionPoints, 1);
-  EXPECT_THROW(DegenerateCurves({DegenerateCurve{0, CurveType::Linear, false, {{0, 0, 0}}, {}}}),
-               Error);
+  DegenerateCurve mismatched;
+  mismatched.points = {{0, 0, 0}};  // one point, no pattern
+  EXPECT_THROW(DegenerateCurves({mismatched}), Error);
 }
 
 }  // namespace
