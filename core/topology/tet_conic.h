@@ -42,6 +42,7 @@ struct ConicPoint {
 
 class TetConic {
  public:
+  /// Keeps a reference to `field`, which must outlive the conic.
   explicit TetConic(const TetLinearField& field);
   /// False when the field is not generic: span{A_c, G1, G2, G3} has dimension < 4 (e.g. a
   /// block-diagonal or constant field) or the conic is a line pair.

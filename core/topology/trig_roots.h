@@ -2,7 +2,7 @@
 // Real roots of g(θ) = A0 + A1 cos θ + B1 sin θ + A2 cos 2θ + B2 sin 2θ on [0, 2π): the
 // restriction of one conic to the parameterised other (face_solver.h). At most 4 roots.
 //
-// Method: θ = φ0 + 2 atan x turns z-free g into the quartic Σ c_k x^k (times (1+x²)²), with the
+// Method: θ = φ0 + 2 atan x turns g into the quartic Σ c_k x^k (times (1+x²)²), with the
 // offset φ0 chosen so that |g(φ0 + π)| is large (no root near x = ∞). The quartic is split into
 // monotone pieces at the real roots of its derivative (closed-form cubic), and every sign change
 // is bracketed and solved by safeguarded Newton, so no simple root is missed. A stationary point
