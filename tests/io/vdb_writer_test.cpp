@@ -1,6 +1,7 @@
 // OpenVDB export: files are read back with the OpenVDB library (io/vdb_reader) and checked for
 // grid names, metadata, transform and values against analytic fields.
 #include "io/vdb_writer.h"
+#include "tests/support/temp_dir.h"
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
@@ -25,24 +26,10 @@ namespace fs = std::filesystem;
 using core::Tensor;
 using core::Vec3;
 
-class TempDir {
+/// Folder names get a per-file prefix so tests running in parallel never share one.
+class TempDir : public test::TempDir {
  public:
-  explicit TempDir(const std::string& name)
-      : path_(fs::temp_directory_path() / ("tfd-vdb-" + name + "-" + std::to_string(::getpid()))) {
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TempDir() { fs::remove_all(path_); }
-  const fs::path& path() const { return path_; }
-  std::vector<std::string> entries() const {
-    std::vector<std::string> out;
-    for (const auto& e : fs::directory_iterator(path_)) out.push_back(e.path().filename());
-    std::sort(out.begin(), out.end());
-    return out;
-  }
-
- private:
-  fs::path path_;
+  explicit TempDir(const std::string& name) : test::TempDir("vdb-" + name) {}
 };
 
 /// A linear tensor field T(p) = T0 + x Tx + y Ty + z Tz: P1 interpolation reproduces it exactly

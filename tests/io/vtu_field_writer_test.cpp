@@ -1,6 +1,7 @@
 // VTU export: the file is read back with an independent VTK XML reader and checked against
 // the mesh, the field and analytic eigen-decompositions.
 #include "io/vtu_field_writer.h"
+#include "tests/support/temp_dir.h"
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
@@ -23,23 +24,10 @@ using core::Mat3;
 using core::Tensor;
 using core::Vec3;
 
-class TempDir {
+/// Folder names get a per-file prefix so tests running in parallel never share one.
+class TempDir : public test::TempDir {
  public:
-  explicit TempDir(const std::string& name)
-      : path_(fs::temp_directory_path() / ("tfd-vtu-" + name + "-" + std::to_string(::getpid()))) {
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TempDir() { fs::remove_all(path_); }
-  const fs::path& path() const { return path_; }
-  std::vector<std::string> entries() const {
-    std::vector<std::string> out;
-    for (const auto& e : fs::directory_iterator(path_)) out.push_back(e.path().filename());
-    return out;
-  }
-
- private:
-  fs::path path_;
+  explicit TempDir(const std::string& name) : test::TempDir("vtu-" + name) {}
 };
 
 Mat3 rotation(double a, double b, double c) {
