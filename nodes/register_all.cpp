@@ -1,4 +1,36 @@
 #include "nodes/register_all.h"
+
+#include "graph/node_registry.h"
+
 namespace tfd::nodes {
-void registerAll(graph::NodeRegistry&) {}
+
+// One registration function per node file (nodes/<type>.cpp).
+void registerTetMesh(graph::NodeRegistry&);
+void registerFieldExpression(graph::NodeRegistry&);
+void registerPointConstraint(graph::NodeRegistry&);
+void registerCurveConstraint(graph::NodeRegistry&);
+void registerMergeConstraints(graph::NodeRegistry&);
+void registerPropagate(graph::NodeRegistry&);
+void registerLocalSmooth(graph::NodeRegistry&);
+void registerExtractDegenerateCurves(graph::NodeRegistry&);
+void registerExportVtu(graph::NodeRegistry&);
+void registerExportVdb(graph::NodeRegistry&);
+void registerExportExr(graph::NodeRegistry&);
+void registerExportCurves(graph::NodeRegistry&);
+
+void registerAll(graph::NodeRegistry& registry) {
+  registerTetMesh(registry);
+  registerFieldExpression(registry);
+  registerPointConstraint(registry);
+  registerCurveConstraint(registry);
+  registerMergeConstraints(registry);
+  registerPropagate(registry);
+  registerLocalSmooth(registry);
+  registerExtractDegenerateCurves(registry);
+  registerExportVtu(registry);
+  registerExportVdb(registry);
+  registerExportExr(registry);
+  registerExportCurves(registry);
+}
+
 }  // namespace tfd::nodes

@@ -1,0 +1,40 @@
+// ExportVDB: the field resampled on a voxel grid, for Houdini and Blender.
+#include "io/vdb_writer.h"
+
+#include "graph/node_registry.h"
+#include "nodes/node_support.h"
+#include "nodes/value_types.h"
+#include "nodes/voxel_export_support.h"
+
+namespace tfd::nodes {
+namespace {
+
+void declare(graph::NodeDecl& d) {
+  d.doc("Writes the field to an OpenVDB file: float grids `T.xx T.yy T.zz T.xy T.yz T.xz`, "
+        "optionally Vec3 grids `T.eigval` and `T.e1 T.e2 T.e3`; voxels whose centre lies inside "
+        "the mesh are active, the rest inactive with value 0.")
+      .category("Export");
+  d.input<core::TensorField>("field");
+  d.param<std::string>("path").byDefault("field.vdb").outputFile("*.vdb").doc("Output file.");
+  declareVoxelParams(d, "quantities");
+}
+
+void cook(graph::CookContext& c) {
+  const auto field = c.input<core::TensorField>("field");
+  io::VdbExportOptions o;
+  o.voxelSize = voxelSizeOf(c, field->mesh());
+  try {
+    o.quantities = io::VoxelQuantities::fromNames(quantityNames(c, "quantities"));
+  } catch (const core::Error& e) {
+    throw c.paramError("quantities", e.what());
+  }
+  o.source = "node " + c.nodeName();
+  const std::filesystem::path path = c.path("path");
+  c.info(voxelInfo(path.string(), io::writeFieldVdb(path, *field, o, progressOf(c))));
+}
+
+}  // namespace
+
+void registerExportVdb(graph::NodeRegistry& r) { r.add("ExportVDB", 1, declare, cook); }
+
+}  // namespace tfd::nodes

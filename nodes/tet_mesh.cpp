@@ -1,0 +1,106 @@
+// TetMesh: the volume every field lives on, from a mesh file or a procedural solid
+// (paper §4 works on TetGen meshes).
+#include <cmath>
+#include <sstream>
+
+#include "io/mesh_file.h"
+#include "io/tetgen_mesher.h"
+
+#include "graph/node_registry.h"
+#include "nodes/node_support.h"
+#include "nodes/value_types.h"
+
+namespace tfd::nodes {
+namespace {
+
+void declare(graph::NodeDecl& d) {
+  d.doc("A tetrahedral mesh: read from `file` (a tet mesh is used as is; a closed surface is "
+        "tetrahedralised by TetGen), or, when `file` is empty, a procedural solid "
+        "tetrahedralised by TetGen.")
+      .category("Mesh");
+  d.output<core::TetMesh>("mesh");
+  d.param<std::string>("file").byDefault("")
+      .inputFile("*.off *.obj *.ply *.stl *.node *.ele *.msh *.vtu")
+      .doc("Surface mesh (.off .obj .ply .stl) or tet mesh (.node/.ele .msh .vtu); empty: "
+           "use `primitive`.");
+  d.param<std::string>("primitive").choices({"sphere", "box", "torus", "double_torus"})
+      .doc("Procedural solid centred at the origin (tori lie in the xy plane).");
+  d.param<double>("radius").byDefault(1).min(1e-9).doc("sphere: radius.");
+  d.param<graph::Vec3Param>("size").byDefault({2, 2, 2}).min(1e-9).doc("box: edge lengths.");
+  d.param<double>("major_radius").byDefault(1).min(1e-9)
+      .doc("torus, double_torus: ring radius (centre to tube centre).");
+  d.param<double>("minor_radius").byDefault(0.4).min(1e-9)
+      .doc("torus, double_torus: tube radius, below major_radius.");
+  d.param<int>("target_tets").byDefault(20000).min(10).max(50000000)
+      .doc("Wanted number of tets (TetGen; within about 25 % for primitives). Ignored for tet "
+           "mesh files.");
+  d.param<double>("quality").byDefault(1.414).min(0).max(10)
+      .doc("TetGen radius-edge ratio bound; 0 switches quality refinement off, otherwise it "
+           "must be above 1.1.");
+  d.param<bool>("keep_boundary").byDefault(true)
+      .doc("Keep the surface triangles as the mesh boundary (TetGen -Y); off lets TetGen "
+           "split coarse or poorly shaped surface triangles for quality.");
+}
+
+io::TetgenOptions tetgenOptions(const graph::CookContext& c, std::string source) {
+  io::TetgenOptions o;
+  o.targetTets = c.param<int>("target_tets");
+  o.quality = c.param<double>("quality");
+  if (o.quality != 0 && o.quality <= 1.1)
+    throw c.paramError("quality", "TetGen needs a radius-edge bound above 1.1 (or 0 for none)");
+  o.keepBoundary = c.param<bool>("keep_boundary");
+  o.source = std::move(source);
+  return o;
+}
+
+core::PrimitiveSpec primitiveSpec(const graph::CookContext& c) {
+  core::PrimitiveSpec spec;
+  spec.shape = core::parsePrimitiveShape(c.param<std::string>("primitive"));
+  spec.radius = c.param<double>("radius");
+  spec.size = vec3Param(c, "size");
+  spec.majorRadius = c.param<double>("major_radius");
+  spec.minorRadius = c.param<double>("minor_radius");
+  if (spec.shape == core::PrimitiveShape::Torus || spec.shape == core::PrimitiveShape::DoubleTorus)
+    if (spec.minorRadius >= spec.majorRadius)
+      throw c.paramError("minor_radius", "the tube radius must be below major_radius");
+  core::validatePrimitive(spec);
+  return spec;
+}
+
+std::string describe(const core::TetMesh& mesh) {
+  std::ostringstream s;
+  s << mesh.vertexCount() << " vertices, " << mesh.tetCount() << " tets, "
+    << mesh.boundaryFaces().size() << " boundary faces, mean edge " << mesh.meanEdgeLength()
+    << ", volume " << mesh.totalVolume();
+  return s.str();
+}
+
+void cook(graph::CookContext& c) {
+  const std::filesystem::path file = c.path("file");
+  const core::Progress progress = progressOf(c);
+  std::shared_ptr<const core::TetMesh> mesh;
+  if (file.empty()) {
+    const core::PrimitiveSpec spec = primitiveSpec(c);
+    const double target = c.param<int>("target_tets");
+    progress.report(0, "surface");
+    const core::SurfaceMesh surface = core::makePrimitiveForTets(spec, target);
+    progress.report(0.1, "tetgen");
+    mesh = io::tetrahedralize(surface, tetgenOptions(c, c.param<std::string>("primitive")),
+                              progress);
+  } else if (io::isTetMeshFile(file)) {
+    mesh = io::readTetMesh(file);
+    c.info("tet mesh read as is: target_tets, quality and keep_boundary do not apply");
+  } else {
+    const core::SurfaceMesh surface = io::readSurfaceMesh(file);
+    progress.report(0.1, "tetgen");
+    mesh = io::tetrahedralize(surface, tetgenOptions(c, "file '" + file.string() + "'"), progress);
+  }
+  c.info(describe(*mesh));
+  c.setOutput("mesh", std::move(mesh));
+}
+
+}  // namespace
+
+void registerTetMesh(graph::NodeRegistry& r) { r.add("TetMesh", 1, declare, cook); }
+
+}  // namespace tfd::nodes

@@ -1,0 +1,140 @@
+// The registered node types as a whole: every parameter feeds the cache key, the shipped
+// examples load, and node-level behaviour that no core test covers (ExportVTU's curve colours,
+// error messages naming the parameter).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <set>
+
+#include "graph/evaluator.h"
+#include "graph/graph_file.h"
+#include "graph/node_registry.h"
+#include "nodes/register_all.h"
+#include "nodes/value_types.h"
+#include "tests/support/registry_hash_check.h"
+#include "tests/support/temp_dir.h"
+#include "tests/support/vtk_xml_reader.h"
+
+namespace tfd::nodes {
+namespace {
+
+namespace fs = std::filesystem;
+
+const graph::NodeRegistry& registry() {
+  static const graph::NodeRegistry& r = *[] {
+    auto* out = new graph::NodeRegistry;  // lives as long as the test program
+    registerAll(*out);
+    return out;
+  }();
+  return r;
+}
+
+graph::CookResult cookText(const std::string& text, const fs::path& outDir) {
+  graph::Graph g = graph::parseGraph(text, registry(), "test graph");
+  graph::CookOptions options;
+  options.outDir = outDir;
+  options.baseDir = outDir;
+  graph::Evaluator evaluator;
+  return evaluator.cook(g, options);
+}
+
+std::string errorOf(const graph::CookResult& result, const std::string& node) {
+  const graph::NodeReport* r = result.report(node);
+  if (r == nullptr) return "(no report)";
+  for (const auto& m : r->messages)
+    if (m.severity == graph::Severity::Error) return m.text;
+  return "(no error)";
+}
+
+TEST(NodeTypes, EveryParameterOfEveryRegisteredTypeChangesTheHash) {
+  test::expectEveryParameterChangesHash(registry());
+}
+
+TEST(NodeTypes, TheFirstNodeTypesAreRegisteredUnderTheirPublicNames) {
+  for (const char* type : {"TetMesh", "FieldExpression", "PointConstraint", "MergeConstraints",
+                           "Propagate", "ExportVTU", "ExportVDB", "ExportEXR",
+                           "ExtractDegenerateCurves", "ExportCurves", "CurveConstraint",
+                           "LocalSmooth"})
+    EXPECT_TRUE(registry().find(type) != nullptr) << type;
+}
+
+TEST(NodeTypes, EveryShippedExampleLoads) {
+  int examples = 0;
+  for (const auto& entry : fs::directory_iterator(fs::path(TFD_SOURCE_DIR) / "examples")) {
+    if (entry.path().string().ends_with(".tfd.json")) {
+      SCOPED_TRACE(entry.path().string());
+      EXPECT_NO_THROW(graph::loadGraphFile(entry.path(), registry()));
+      ++examples;
+    }
+  }
+  EXPECT_GE(examples, 3);
+}
+
+constexpr const char* kDesign = R"({
+  "format": "tfd-graph", "formatVersion": 2,
+  "nodes": {
+    "ball": {"type": "TetMesh", "typeVersion": 1, "params": {"target_tets": 5000}},
+    "p": {"type": "PointConstraint", "typeVersion": 1,
+          "params": {"kind": "degenerate", "position": [0.1, 0.05, 0.02], "type": "planar"}},
+    "field": {"type": "Propagate", "typeVersion": 1},
+    "topology": {"type": "ExtractDegenerateCurves", "typeVersion": 1},
+    "vtu": {"type": "ExportVTU", "typeVersion": 1, "params": {"path": "f.vtu"}}
+  },
+  "links": [
+    {"from": "ball.mesh", "to": "field.mesh"}, {"from": "p.constraints", "to": "field.constraints"},
+    {"from": "field.field", "to": "topology.field"}, {"from": "field.field", "to": "vtu.field"},
+    {"from": "topology.curves", "to": "vtu.curves"}
+  ]})";
+
+TEST(NodeTypes, ExportVtuColoursTheTetsAlongEachCurveWithFigure5Colours) {
+  test::TempDir dir("node-types-vtu");
+  const graph::CookResult result = cookText(kDesign, dir.path());
+  ASSERT_TRUE(result.ok()) << errorOf(result, "field") << errorOf(result, "vtu");
+  const auto curves = result.output<core::DegenerateCurves>("topology", "curves");
+  ASSERT_FALSE(curves->empty());
+
+  const test::VtkXmlFile file = test::readVtkXmlFile(dir.path() / "f.vtu");
+  const auto& cells = file.root.child("UnstructuredGrid").child("Piece").child("CellData");
+  const std::vector<double> ids = file.values(file.array(cells, "curve_id"));
+  const std::vector<double> rgb = file.values(file.array(cells, "curve_colour"));
+  ASSERT_EQ(rgb.size(), 3 * ids.size());
+  std::set<int> seen;
+  for (std::size_t t = 0; t < ids.size(); ++t) {
+    if (ids[t] < 0) {
+      EXPECT_EQ(rgb[3 * t] + rgb[3 * t + 1] + rgb[3 * t + 2], 0) << "tet " << t;
+      continue;
+    }
+    const core::DegenerateCurve& curve = curves->curve(static_cast<int>(ids[t]));
+    seen.insert(curve.id);
+    std::set<std::array<double, 3>> allowed;
+    for (auto pattern : {core::PointPattern::Wedge, core::PointPattern::Trisector,
+                         core::PointPattern::Transition}) {
+      const auto c = core::fig5Colour(curve.type, pattern);
+      allowed.insert({double(c[0]), double(c[1]), double(c[2])});
+    }
+    EXPECT_TRUE(allowed.count({rgb[3 * t], rgb[3 * t + 1], rgb[3 * t + 2]})) << "tet " << t;
+  }
+  EXPECT_EQ(seen.size(), curves->size()) << "every curve marks at least one tet";
+}
+
+TEST(NodeTypes, BadParametersFailTheNodeNamingTheParameter) {
+  test::TempDir dir("node-types-bad");
+  std::string text = kDesign;
+  text.replace(text.find(R"("path": "f.vtu")"), 15, R"("path": "f.vtu", "encoding": "ascii")");
+  const std::string torus = R"("params": {"primitive": "torus", "major_radius": 0.5, "minor_radius": 0.6})";
+  std::string bad = text;
+  bad.replace(bad.find(R"("params": {"target_tets": 5000})"), 31, torus);
+  graph::CookResult r = cookText(bad, dir.path());
+  EXPECT_NE(errorOf(r, "ball").find("parameter 'minor_radius'"), std::string::npos)
+      << errorOf(r, "ball");
+  bad = text;
+  bad.replace(bad.find(R"("params": {"target_tets": 5000})"), 31,
+              R"("params": {"target_tets": 5000, "quality": 1.05})");
+  r = cookText(bad, dir.path());
+  EXPECT_NE(errorOf(r, "ball").find("parameter 'quality'"), std::string::npos)
+      << errorOf(r, "ball");
+  EXPECT_TRUE(dir.entries().empty()) << "nothing written";
+}
+
+}  // namespace
+}  // namespace tfd::nodes
