@@ -1,4 +1,4 @@
-// Curve constraints and LocalSmooth on a 1M-tet TetGen sphere (bench/RESULTS-curves.md).
+// Curve constraints and LocalSmooth on a 1M-tet TetGen sphere (bench/RESULTS.md).
 //
 //   BM_ApplyTenCurves:  build ten CurveConstraint elements (spline, frames, linearisations) and
 //                       apply them (tubes covering ~5 % of the vertices) into one accumulator.

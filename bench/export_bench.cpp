@@ -1,6 +1,6 @@
 // Export timings on a ~1M-tet box mesh (55³ cubes × 6 = 998,250 tets): OpenVDB at a voxel
 // size giving 128³ voxels, the voxel sampling alone, EXR slices and VTU. The argument is the
-// thread count. Results and the command line: bench/RESULTS-export.md.
+// thread count. Results and the command line: bench/RESULTS.md.
 #include <benchmark/benchmark.h>
 #include <tbb/global_control.h>
 #include <unistd.h>

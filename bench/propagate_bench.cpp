@@ -3,7 +3,7 @@
 // boundary-conforming second solve, total, and the process's peak resident memory.
 // Run one size per process for a meaningful peak memory, e.g.
 //   build/bench/propagate_bench --benchmark_filter='Sphere/1000000'
-// (commands and figures in bench/RESULTS-propagate.md).
+// (commands and figures in bench/RESULTS.md).
 #include <benchmark/benchmark.h>
 #include <tbb/global_control.h>
 #include <Eigen/CholmodSupport>

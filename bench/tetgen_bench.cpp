@@ -4,7 +4,7 @@
 // as wall-clock and as process CPU time (std::clock, all threads: robust on a busy machine),
 // and the peak resident memory of the run (VmHWM, reset before each size).
 // Run: build-<dir>/bench/tetgen_bench --benchmark_counters_tabular=true
-// Results and machine notes: bench/RESULTS-tetgen.md.
+// Results and machine notes: bench/RESULTS.md.
 #include <benchmark/benchmark.h>
 
 #include <chrono>

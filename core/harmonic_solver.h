@@ -1,7 +1,7 @@
 #pragma once
 // Dirichlet-constrained harmonic solve of the five tensor components (paper §5, Equation 1).
 //
-// Method (chosen by measurement, see bench/RESULTS-propagate.md): the free-free block of the
+// Method (chosen by measurement, see bench/RESULTS.md): the free-free block of the
 // P1 stiffness matrix (core/laplacian.h) is solved by conjugate gradients on all five
 // components at once (one pass over the matrix per iteration), preconditioned by a
 // smoothed-aggregation multigrid V-cycle (core/linalg/amg.h). Deterministic for any thread

@@ -305,7 +305,7 @@ double edgeLengthForTargetTets(double volume, double targetTets) {
   // TetGen quality meshes (q1.414, volume bound 1.8 V/N) of a surface with edge length L have
   // interior edges of about L when L³ ≈ 12 V/N (a regular tet of edge L has volume L³/8.5;
   // Delaunay meshes have many flatter tets). Calibrated for spheres, boxes and tori from 10K
-  // to 1M tets, see bench/RESULTS-tetgen.md.
+  // to 1M tets, see bench/RESULTS.md.
   constexpr double kVolumeFactor = 12.0;
   return std::cbrt(kVolumeFactor * volume / targetTets);
 }

@@ -27,7 +27,7 @@ struct TetgenOptions {
   /// splits boundary triangles freely.
   bool keepBoundary = true;
   /// Calibration of the volume bound: TetGen's mean tet volume ends up well below the bound,
-  /// 1.8 lands the count on the target (see bench/RESULTS-tetgen.md).
+  /// 1.8 lands the count on the target (see bench/RESULTS.md).
   double volumeFactor = 1.8;
   /// Names the surface in error messages, e.g. "file 'part.stl'"; empty: "the surface".
   std::string source = {};

@@ -10,10 +10,11 @@ namespace tfd::nodes {
 namespace {
 
 void declare(graph::NodeDecl& d) {
-  d.doc("Design elements along a curve: control points fitted by a smooth spline, sampled "
-        "evenly, each sample with a twist-free (parallel transport) frame whose third axis is "
-        "the tangent. Mesh vertices within `radius` of the curve take the value of the nearest "
-        "curve point's linearisation; overlapping tubes blend by distance.")
+  d.doc(
+       "Design elements along a curve: control points fitted by a smooth spline, sampled "
+       "evenly, each sample with a twist-free (parallel transport) frame whose third axis is "
+       "the tangent. Mesh vertices within `radius` of the curve take the value of the nearest "
+       "curve point's linearisation; overlapping tubes blend by distance.")
       .category("Design");
   d.output<core::ConstraintSet>("constraints");
   d.param<std::vector<graph::Vec3Param>>("points")
@@ -22,23 +23,35 @@ void declare(graph::NodeDecl& d) {
       .hint(graph::UiHint::Position)
       .doc("Control points [[x, y, z], ...]; at least 2 (3 for a closed curve).");
   d.param<bool>("closed").byDefault(false).doc("A loop through the points (a torus tube).");
-  d.param<double>("spacing").byDefault(0.05).min(1e-9)
-      .doc("Distance between samples along the spline (adjusted to divide its length).");
-  d.param<std::string>("kind").choices({"degenerate", "tensor"})
-      .doc("degenerate: a degenerate curve with a pattern; tensor: non-degenerate values whose "
-           "eigenvectors follow the frame.");
-  d.param<std::string>("type").choices({"linear", "planar"})
+  d.param<double>("spacing").byDefault(0.05).min(1e-9).doc(
+      "Distance between samples along the spline (adjusted to divide its length).");
+  d.param<std::string>("kind")
+      .choices({"degenerate", "tensor"})
+      .doc(
+          "degenerate: a degenerate curve with a pattern; tensor: non-degenerate values whose "
+          "eigenvectors follow the frame.");
+  d.param<std::string>("type")
+      .choices({"linear", "planar"})
       .doc("kind degenerate: linear (eigenvalues 2,-1,-1) or planar (1,1,-2) along the tangent.");
-  d.param<std::string>("pattern").choices({"wedge", "trisector", "custom"})
+  d.param<std::string>("pattern")
+      .choices({"wedge", "trisector", "custom"})
       .doc("kind degenerate: the 2D pattern in the degenerate plane (Eq. 3), or custom blocks.");
-  d.param<std::vector<double>>("pattern_tx").size(3).byDefault({1, -1, 0})
+  d.param<std::vector<double>>("pattern_tx")
+      .size(3)
+      .byDefault({1, -1, 0})
       .doc("pattern custom: the 2x2 block of Tx as (uu, vv, uv).");
-  d.param<std::vector<double>>("pattern_ty").size(3).byDefault({0, 0, 1})
+  d.param<std::vector<double>>("pattern_ty")
+      .size(3)
+      .byDefault({0, 0, 1})
       .doc("pattern custom: the 2x2 block of Ty as (uu, vv, uv).");
-  d.param<std::vector<double>>("eigenvalues").size(3).byDefault({0, -1, 1})
-      .doc("kind tensor: eigenvalues along the frame axes (u, v, tangent); default makes the "
-           "tangent the major eigenvector.");
-  d.param<graph::Vec3Param>("rotation").hint(graph::UiHint::Angle)
+  d.param<std::vector<double>>("eigenvalues")
+      .size(3)
+      .byDefault({0, -1, 1})
+      .doc(
+          "kind tensor: eigenvalues along the frame axes (u, v, tangent); default makes the "
+          "tangent the major eigenvector.");
+  d.param<graph::Vec3Param>("rotation")
+      .hint(graph::UiHint::Angle)
       .doc("Rotation of every sample's frame: Euler angles in degrees about x, then y, then z.");
   d.param<double>("radius").byDefault(0.1).min(1e-9).doc("Tube radius around the curve.");
 }
@@ -52,7 +65,8 @@ core::PatternBlocks blocks(const std::vector<double>& tx, const std::vector<doub
 
 void cook(graph::CookContext& c) {
   core::CurveOptions o;
-  for (const auto& p : c.param<std::vector<graph::Vec3Param>>("points")) o.points.push_back(toVec3(p));
+  for (const auto& p : c.param<std::vector<graph::Vec3Param>>("points"))
+    o.points.push_back(toVec3(p));
   o.closed = c.param<bool>("closed");
   o.spacing = c.param<double>("spacing");
   o.kind = core::parseCurveKind(c.param<std::string>("kind"));

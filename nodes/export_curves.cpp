@@ -8,12 +8,15 @@ namespace tfd::nodes {
 namespace {
 
 void declare(graph::NodeDecl& d) {
-  d.doc("Writes degenerate curves; the format follows the extension: .json (the "
-        "tfd-degenerate-curves exchange format), .vtp (ParaView polylines with type, pattern "
-        "and Fig. 5 colour arrays) or .obj (line elements).")
+  d.doc(
+       "Writes degenerate curves; the format follows the extension: .json (the "
+       "tfd-degenerate-curves exchange format), .vtp (ParaView polylines with type, pattern "
+       "and Fig. 5 colour arrays) or .obj (line elements).")
       .category("Export");
   d.input<core::DegenerateCurves>("curves");
-  d.param<std::string>("path").byDefault("curves.json").outputFile("*.json *.vtp *.obj")
+  d.param<std::string>("path")
+      .byDefault("curves.json")
+      .outputFile("*.json *.vtp *.obj")
       .doc("Output file: .json, .vtp or .obj.");
 }
 

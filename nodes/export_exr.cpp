@@ -10,12 +10,15 @@ namespace tfd::nodes {
 namespace {
 
 void declare(graph::NodeDecl& d) {
-  d.doc("Writes the field as a sequence of OpenEXR images, one per z-slice of a voxel grid "
-        "(bottom to top), 32-bit float channels named `T.xx` ... plus a mask `A`; header "
-        "attributes `tfd.*` give the voxel size, slice position and pixel placement.")
+  d.doc(
+       "Writes the field as a sequence of OpenEXR images, one per z-slice of a voxel grid "
+       "(bottom to top), 32-bit float channels named `T.xx` ... plus a mask `A`; header "
+       "attributes `tfd.*` give the voxel size, slice position and pixel placement.")
       .category("Export");
   d.input<core::TensorField>("field");
-  d.param<std::string>("path").byDefault("slices/field.%04d.exr").outputFile("*.exr")
+  d.param<std::string>("path")
+      .byDefault("slices/field.%04d.exr")
+      .outputFile("*.exr")
       .doc("File pattern with one slice-number placeholder: %d, %04d or ####.");
   declareVoxelParams(d, "quantity");
 }
@@ -24,15 +27,11 @@ void cook(graph::CookContext& c) {
   const auto field = c.input<core::TensorField>("field");
   io::ExrExportOptions o;
   o.voxelSize = voxelSizeOf(c, field->mesh());
-  try {
-    o.quantities = io::VoxelQuantities::fromNames(quantityNames(c, "quantity"));
-  } catch (const core::Error& e) {
-    throw c.paramError("quantity", e.what());
-  }
+  o.quantities = quantitiesOf(c, "quantity");
   o.source = "node " + c.nodeName();
   const std::filesystem::path pattern = c.path("path");
-  const io::VoxelExportStats stats = io::writeFieldExrSlices(pattern.string(), *field, o,
-                                                             progressOf(c));
+  const io::VoxelExportStats stats =
+      io::writeFieldExrSlices(pattern.string(), *field, o, progressOf(c));
   c.info(voxelInfo(std::to_string(stats.filesWritten) + " slices " + pattern.string(), stats));
 }
 

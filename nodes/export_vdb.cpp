@@ -10,9 +10,10 @@ namespace tfd::nodes {
 namespace {
 
 void declare(graph::NodeDecl& d) {
-  d.doc("Writes the field to an OpenVDB file: float grids `T.xx T.yy T.zz T.xy T.yz T.xz`, "
-        "optionally Vec3 grids `T.eigval` and `T.e1 T.e2 T.e3`; voxels whose centre lies inside "
-        "the mesh are active, the rest inactive with value 0.")
+  d.doc(
+       "Writes the field to an OpenVDB file: float grids `T.xx T.yy T.zz T.xy T.yz T.xz`, "
+       "optionally Vec3 grids `T.eigval` and `T.e1 T.e2 T.e3`; voxels whose centre lies inside "
+       "the mesh are active, the rest inactive with value 0.")
       .category("Export");
   d.input<core::TensorField>("field");
   d.param<std::string>("path").byDefault("field.vdb").outputFile("*.vdb").doc("Output file.");
@@ -23,11 +24,7 @@ void cook(graph::CookContext& c) {
   const auto field = c.input<core::TensorField>("field");
   io::VdbExportOptions o;
   o.voxelSize = voxelSizeOf(c, field->mesh());
-  try {
-    o.quantities = io::VoxelQuantities::fromNames(quantityNames(c, "quantities"));
-  } catch (const core::Error& e) {
-    throw c.paramError("quantities", e.what());
-  }
+  o.quantities = quantitiesOf(c, "quantities");
   o.source = "node " + c.nodeName();
   const std::filesystem::path path = c.path("path");
   c.info(voxelInfo(path.string(), io::writeFieldVdb(path, *field, o, progressOf(c))));

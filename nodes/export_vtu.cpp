@@ -12,21 +12,23 @@ namespace tfd::nodes {
 namespace {
 
 void declare(graph::NodeDecl& d) {
-  d.doc("Writes the field to a VTK XML unstructured grid (.vtu) that ParaView opens: the "
-        "active tensor `T` (xx, yy, zz, xy, yz, xz), `T.eigval`, `T.e1` `T.e2` `T.e3` and "
-        "`T.type` (1 linear, -1 planar, 0 neutral). With `curves` connected, every tet that a "
-        "degenerate curve passes through gets the cell arrays `curve_id` (-1 elsewhere) and "
-        "`curve_colour` (the paper's Fig. 5 colours: L-wedge green, L-trisector blue, P-wedge "
-        "yellow, P-trisector red, transition white); threshold on curve_id >= 0 to see them.")
+  d.doc(
+       "Writes the field to a VTK XML unstructured grid (.vtu) that ParaView opens: the "
+       "active tensor `T` (xx, yy, zz, xy, yz, xz), `T.eigval`, `T.e1` `T.e2` `T.e3` and "
+       "`T.type` (1 linear, -1 planar, 0 neutral). With `curves` connected, every tet that a "
+       "degenerate curve passes through gets the cell arrays `curve_id` (-1 elsewhere) and "
+       "`curve_colour` (the paper's Fig. 5 colours: L-wedge green, L-trisector blue, P-wedge "
+       "yellow, P-trisector red, transition white); threshold on curve_id >= 0 to see them.")
       .category("Export");
   d.input<core::TensorField>("field");
-  d.input<core::DegenerateCurves>("curves").optional()
-      .doc("Degenerate curves of this field (ExtractDegenerateCurves) to colour the tets.");
-  d.param<std::string>("path").byDefault("field.vtu").outputFile("*.vtu")
-      .doc("Output file.");
-  d.param<std::string>("encoding").choices({"binary", "base64", "ascii"})
-      .doc("binary: raw appended data (smallest, fastest); base64: inline binary; ascii: "
-           "readable text.");
+  d.input<core::DegenerateCurves>("curves").optional().doc(
+      "Degenerate curves of this field (ExtractDegenerateCurves) to colour the tets.");
+  d.param<std::string>("path").byDefault("field.vtu").outputFile("*.vtu").doc("Output file.");
+  d.param<std::string>("encoding")
+      .choices({"binary", "base64", "ascii"})
+      .doc(
+          "binary: raw appended data (smallest, fastest); base64: inline binary; ascii: "
+          "readable text.");
 }
 
 io::VtkEncoding encodingOf(const std::string& name) {
@@ -54,7 +56,7 @@ std::vector<io::NamedArray> curveCellArrays(const core::TetMesh& mesh,
       if (i + 1 < n || (curve.closed && n > 2)) {
         const std::size_t j = (i + 1) % n;
         const core::PointPattern midPattern =
-            curve.patterns[i] == curve.patterns[j] ? curve.patterns[i]
+            curve.patterns[i] == curve.patterns[j]                ? curve.patterns[i]
             : curve.patterns[i] == core::PointPattern::Transition ? curve.patterns[j]
                                                                   : curve.patterns[i];
         mark(0.5 * (curve.points[i] + curve.points[j]), curve.id, curve.type, midPattern);

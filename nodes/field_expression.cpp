@@ -9,8 +9,9 @@ namespace tfd::nodes {
 namespace {
 
 void declare(graph::NodeDecl& d) {
-  d.doc("A tensor field from expressions of x, y, z per component (muParser syntax: + - * / ^, "
-        "sin, cos, exp, sqrt, pi, ...). The traceless part is kept.")
+  d.doc(
+       "A tensor field from expressions of x, y, z per component (muParser syntax: + - * / ^, "
+       "sin, cos, exp, sqrt, pi, ...). The traceless part is kept.")
       .category("Field");
   d.input<core::TetMesh>("mesh").doc("The volume the field lives on.");
   d.output<core::TensorField>("field");
@@ -23,7 +24,8 @@ void declare(graph::NodeDecl& d) {
 
 void cook(graph::CookContext& c) {
   core::TensorExpressions e;
-  for (int i = 0; i < 6; ++i) e.components[i] = c.param<std::string>(core::tensorComponentNames()[i]);
+  for (int i = 0; i < 6; ++i)
+    e.components[i] = c.param<std::string>(core::tensorComponentNames()[i]);
   c.setOutput("field", std::make_shared<const core::TensorField>(core::evaluateFieldExpression(
                            c.input<core::TetMesh>("mesh"), e, progressOf(c))));
 }

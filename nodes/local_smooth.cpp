@@ -10,28 +10,37 @@ namespace tfd::nodes {
 namespace {
 
 void declare(graph::NodeDecl& d) {
-  d.doc("Smooths the field inside a region: a sphere, a box, or the tube around the "
-        "degenerate curve nearest `pick`. The region's vertices are re-solved harmonically "
-        "with the field on the region's boundary (and on the domain boundary inside it) held "
-        "fixed; vertices outside the region keep their exact values. Removes small features "
-        "such as tiny degenerate loops.")
+  d.doc(
+       "Smooths the field inside a region: a sphere, a box, or the tube around the "
+       "degenerate curve nearest `pick`. The region's vertices are re-solved harmonically "
+       "with the field on the region's boundary (and on the domain boundary inside it) held "
+       "fixed; vertices outside the region keep their exact values. Removes small features "
+       "such as tiny degenerate loops.")
       .category("Edit");
   d.input<core::TensorField>("field");
-  d.input<core::DegenerateCurves>("curves").optional()
-      .doc("region curve: this field's degenerate curves, when already extracted (otherwise "
-           "they are extracted here).");
+  d.input<core::DegenerateCurves>("curves").optional().doc(
+      "region curve: this field's degenerate curves, when already extracted (otherwise "
+      "they are extracted here).");
   d.output<core::TensorField>("field");
-  d.param<std::string>("region").choices({"sphere", "box", "curve"})
+  d.param<std::string>("region")
+      .choices({"sphere", "box", "curve"})
       .doc("sphere (center, radius), box (center, size) or curve (pick, radius).");
-  d.param<graph::Vec3Param>("center").hint(graph::UiHint::Position)
+  d.param<graph::Vec3Param>("center")
+      .hint(graph::UiHint::Position)
       .doc("region sphere or box: its centre.");
-  d.param<double>("radius").byDefault(0.25).min(1e-9)
-      .doc("region sphere: its radius; region curve: the tube radius around the curve.");
-  d.param<graph::Vec3Param>("size").byDefault({0.5, 0.5, 0.5}).min(1e-9)
+  d.param<double>("radius").byDefault(0.25).min(1e-9).doc(
+      "region sphere: its radius; region curve: the tube radius around the curve.");
+  d.param<graph::Vec3Param>("size")
+      .byDefault({0.5, 0.5, 0.5})
+      .min(1e-9)
       .doc("region box: edge lengths along x, y, z.");
-  d.param<graph::Vec3Param>("pick").hint(graph::UiHint::Position)
+  d.param<graph::Vec3Param>("pick")
+      .hint(graph::UiHint::Position)
       .doc("region curve: a point near the degenerate curve to smooth around.");
-  d.param<double>("tolerance").byDefault(1e-8).min(1e-14).max(1e-2)
+  d.param<double>("tolerance")
+      .byDefault(1e-8)
+      .min(1e-14)
+      .max(1e-2)
       .doc("Relative residual at which the solve stops.");
 }
 

@@ -11,28 +11,40 @@ namespace tfd::nodes {
 namespace {
 
 void declare(graph::NodeDecl& d) {
-  d.doc("A design element at a point: a tensor value, or a degenerate tensor with the local "
-        "linearisation of Eq. 2 (wedge or trisector pattern, Eq. 3). It fixes the vertices of "
-        "the tet that holds it, or every vertex within `radius`.")
+  d.doc(
+       "A design element at a point: a tensor value, or a degenerate tensor with the local "
+       "linearisation of Eq. 2 (wedge or trisector pattern, Eq. 3). It fixes the vertices of "
+       "the tet that holds it, or every vertex within `radius`.")
       .category("Design");
   d.output<core::ConstraintSet>("constraints");
   d.param<graph::Vec3Param>("position").hint(graph::UiHint::Position).doc("Where the element is.");
-  d.param<std::string>("kind").choices({"tensor", "degenerate"})
+  d.param<std::string>("kind")
+      .choices({"tensor", "degenerate"})
       .doc("tensor: a non-degenerate value; degenerate: a degenerate point with a pattern.");
-  d.param<std::vector<double>>("tensor").size(6).byDefault({0, 0, 0, 0, 0, 0})
-      .doc("kind tensor: components xx, yy, zz, xy, yz, xz in the rotated frame. When all are "
-           "zero, `eigenvalues` along the frame axes are used instead.");
-  d.param<std::vector<double>>("eigenvalues").size(3).byDefault({1, -0.25, -0.75})
+  d.param<std::vector<double>>("tensor")
+      .size(6)
+      .byDefault({0, 0, 0, 0, 0, 0})
+      .doc(
+          "kind tensor: components xx, yy, zz, xy, yz, xz in the rotated frame. When all are "
+          "zero, `eigenvalues` along the frame axes are used instead.");
+  d.param<std::vector<double>>("eigenvalues")
+      .size(3)
+      .byDefault({1, -0.25, -0.75})
       .doc("kind tensor: eigenvalues along the frame's x, y, z axes (traceless part used).");
-  d.param<std::string>("type").choices({"linear", "planar"})
-      .doc("kind degenerate: linear (eigenvalues 2,-1,-1) or planar (1,1,-2); the "
-           "non-degenerate eigenvector is the frame's z axis.");
-  d.param<std::string>("pattern").choices({"wedge", "trisector"})
-      .doc("kind degenerate: the 2D pattern in the degenerate plane (Eq. 3; trisector negates Ty).");
-  d.param<graph::Vec3Param>("rotation").hint(graph::UiHint::Angle)
+  d.param<std::string>("type")
+      .choices({"linear", "planar"})
+      .doc(
+          "kind degenerate: linear (eigenvalues 2,-1,-1) or planar (1,1,-2); the "
+          "non-degenerate eigenvector is the frame's z axis.");
+  d.param<std::string>("pattern")
+      .choices({"wedge", "trisector"})
+      .doc(
+          "kind degenerate: the 2D pattern in the degenerate plane (Eq. 3; trisector negates Ty).");
+  d.param<graph::Vec3Param>("rotation")
+      .hint(graph::UiHint::Angle)
       .doc("Frame rotation: Euler angles in degrees about x, then y, then z.");
-  d.param<double>("radius").byDefault(0).min(0)
-      .doc("0: fix the 4 vertices of the tet holding the point; > 0: every vertex within it.");
+  d.param<double>("radius").byDefault(0).min(0).doc(
+      "0: fix the 4 vertices of the tet holding the point; > 0: every vertex within it.");
 }
 
 void cook(graph::CookContext& c) {

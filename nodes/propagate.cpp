@@ -10,25 +10,36 @@ namespace tfd::nodes {
 namespace {
 
 void declare(graph::NodeDecl& d) {
-  d.doc("Propagates the design constraints over the mesh: the five traceless components are "
-        "harmonic (Eq. 1) away from the fixed vertices. With `boundary_conforming` a second "
-        "solve makes the boundary normal an eigenvector (Eq. 4); with `curvature_boundary` the "
-        "boundary takes the surface's curvature tensor instead.")
+  d.doc(
+       "Propagates the design constraints over the mesh: the five traceless components are "
+       "harmonic (Eq. 1) away from the fixed vertices. With `boundary_conforming` a second "
+       "solve makes the boundary normal an eigenvector (Eq. 4); with `curvature_boundary` the "
+       "boundary takes the surface's curvature tensor instead.")
       .category("Design");
   d.input<core::TetMesh>("mesh").doc("The volume.");
-  d.input<core::ConstraintSet>("constraints").optional()
-      .doc("Design elements (merge several with MergeConstraints). Optional with "
-           "curvature_boundary.");
+  d.input<core::ConstraintSet>("constraints")
+      .optional()
+      .doc(
+          "Design elements (merge several with MergeConstraints). Optional with "
+          "curvature_boundary.");
   d.output<core::TensorField>("field");
-  d.param<bool>("boundary_conforming").byDefault(true)
-      .doc("Second solve with every boundary vertex fixed to its value with the tangent-normal "
-           "block zeroed (Eq. 4): the surface normal is an eigenvector on the boundary.");
-  d.param<bool>("curvature_boundary").byDefault(false)
-      .doc("Fix the boundary to the surface curvature tensor (Rusinkiewicz 2004) lifted to 3D; "
-           "replaces the boundary-conforming solve.");
-  d.param<double>("normal_eigenvalue").byDefault(0)
+  d.param<bool>("boundary_conforming")
+      .byDefault(true)
+      .doc(
+          "Second solve with every boundary vertex fixed to its value with the tangent-normal "
+          "block zeroed (Eq. 4): the surface normal is an eigenvector on the boundary.");
+  d.param<bool>("curvature_boundary")
+      .byDefault(false)
+      .doc(
+          "Fix the boundary to the surface curvature tensor (Rusinkiewicz 2004) lifted to 3D; "
+          "replaces the boundary-conforming solve.");
+  d.param<double>("normal_eigenvalue")
+      .byDefault(0)
       .doc("curvature_boundary: the eigenvalue given to the normal direction.");
-  d.param<double>("tolerance").byDefault(1e-8).min(1e-14).max(1e-2)
+  d.param<double>("tolerance")
+      .byDefault(1e-8)
+      .min(1e-14)
+      .max(1e-2)
       .doc("Relative residual at which each conjugate-gradient solve stops.");
 }
 

@@ -14,32 +14,46 @@ namespace tfd::nodes {
 namespace {
 
 void declare(graph::NodeDecl& d) {
-  d.doc("A tetrahedral mesh: read from `file` (a tet mesh is used as is; a closed surface is "
-        "tetrahedralised by TetGen), or, when `file` is empty, a procedural solid "
-        "tetrahedralised by TetGen.")
+  d.doc(
+       "A tetrahedral mesh: read from `file` (a tet mesh is used as is; a closed surface is "
+       "tetrahedralised by TetGen), or, when `file` is empty, a procedural solid "
+       "tetrahedralised by TetGen.")
       .category("Mesh");
   d.output<core::TetMesh>("mesh");
-  d.param<std::string>("file").byDefault("")
+  d.param<std::string>("file")
+      .byDefault("")
       .inputFile("*.off *.obj *.ply *.stl *.node *.ele *.msh *.vtu")
-      .doc("Surface mesh (.off .obj .ply .stl) or tet mesh (.node/.ele .msh .vtu); empty: "
-           "use `primitive`.");
-  d.param<std::string>("primitive").choices({"sphere", "box", "torus", "double_torus"})
+      .doc(
+          "Surface mesh (.off .obj .ply .stl) or tet mesh (.node/.ele .msh .vtu); empty: "
+          "use `primitive`.");
+  d.param<std::string>("primitive")
+      .choices({"sphere", "box", "torus", "double_torus"})
       .doc("Procedural solid centred at the origin (tori lie in the xy plane).");
   d.param<double>("radius").byDefault(1).min(1e-9).doc("sphere: radius.");
   d.param<graph::Vec3Param>("size").byDefault({2, 2, 2}).min(1e-9).doc("box: edge lengths.");
-  d.param<double>("major_radius").byDefault(1).min(1e-9)
+  d.param<double>("major_radius")
+      .byDefault(1)
+      .min(1e-9)
       .doc("torus, double_torus: ring radius (centre to tube centre).");
-  d.param<double>("minor_radius").byDefault(0.4).min(1e-9)
+  d.param<double>("minor_radius")
+      .byDefault(0.4)
+      .min(1e-9)
       .doc("torus, double_torus: tube radius, below major_radius.");
-  d.param<int>("target_tets").byDefault(20000).min(10).max(50000000)
-      .doc("Wanted number of tets (TetGen; within about 25 % for primitives). Ignored for tet "
-           "mesh files.");
-  d.param<double>("quality").byDefault(1.414).min(0).max(10)
-      .doc("TetGen radius-edge ratio bound; 0 switches quality refinement off, otherwise it "
-           "must be above 1.1.");
-  d.param<bool>("keep_boundary").byDefault(true)
-      .doc("Keep the surface triangles as the mesh boundary (TetGen -Y); off lets TetGen "
-           "split coarse or poorly shaped surface triangles for quality.");
+  d.param<int>("target_tets")
+      .byDefault(20000)
+      .min(10)
+      .max(50000000)
+      .doc(
+          "Wanted number of tets (TetGen; within about 25 % for primitives). Ignored for tet "
+          "mesh files.");
+  d.param<double>("quality").byDefault(1.414).min(0).max(10).doc(
+      "TetGen radius-edge ratio bound; 0 switches quality refinement off, otherwise it "
+      "must be above 1.1.");
+  d.param<bool>("keep_boundary")
+      .byDefault(true)
+      .doc(
+          "Keep the surface triangles as the mesh boundary (TetGen -Y); off lets TetGen "
+          "split coarse or poorly shaped surface triangles for quality.");
 }
 
 io::TetgenOptions tetgenOptions(const graph::CookContext& c, std::string source) {
@@ -85,8 +99,8 @@ void cook(graph::CookContext& c) {
     progress.report(0, "surface");
     const core::SurfaceMesh surface = core::makePrimitiveForTets(spec, target);
     progress.report(0.1, "tetgen");
-    mesh = io::tetrahedralize(surface, tetgenOptions(c, c.param<std::string>("primitive")),
-                              progress);
+    mesh =
+        io::tetrahedralize(surface, tetgenOptions(c, c.param<std::string>("primitive")), progress);
   } else if (io::isTetMeshFile(file)) {
     mesh = io::readTetMesh(file);
     c.info("tet mesh read as is: target_tets, quality and keep_boundary do not apply");

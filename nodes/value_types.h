@@ -15,8 +15,7 @@ std::size_t curvesBytes(const core::DegenerateCurves& curves);
 }  // namespace tfd::nodes::detail
 
 TFD_GRAPH_VALUE_TYPE_SIZED(tfd::core::TetMesh, "TetMesh", tfd::nodes::detail::meshBytes);
-TFD_GRAPH_VALUE_TYPE_SIZED(tfd::core::TensorField, "TensorField",
-                           tfd::nodes::detail::fieldBytes);
+TFD_GRAPH_VALUE_TYPE_SIZED(tfd::core::TensorField, "TensorField", tfd::nodes::detail::fieldBytes);
 TFD_GRAPH_VALUE_TYPE_SIZED(tfd::core::ConstraintSet, "Constraints",
                            tfd::nodes::detail::constraintBytes);
 TFD_GRAPH_VALUE_TYPE_SIZED(tfd::core::DegenerateCurves, "DegenerateCurves",

@@ -16,8 +16,9 @@ void declareVoxelParams(graph::NodeDecl& d, const std::string& quantitiesName);
 /// `voxel_size`, or for 0 the mesh's longest bounding-box side / 128.
 double voxelSizeOf(const graph::CookContext& c, const core::TetMesh& mesh);
 
-/// The names in a comma-separated list parameter ("tensor, eigenvalues"), spaces trimmed.
-std::vector<std::string> quantityNames(const graph::CookContext& c, const std::string& name);
+/// The quantities named in the comma-separated list parameter `name` ("tensor, eigenvalues");
+/// errors name the parameter.
+io::VoxelQuantities quantitiesOf(const graph::CookContext& c, const std::string& name);
 
 /// "wrote PATH: NX x NY x NZ voxels of SIZE, N active".
 std::string voxelInfo(const std::string& what, const io::VoxelExportStats& stats);

@@ -37,23 +37,22 @@ ordered_json node(const std::string& type, ordered_json params = ordered_json::o
 /// and every exporter.
 ordered_json designGraph() {
   ordered_json g = {{"format", "tfd-graph"}, {"formatVersion", 2}};
-  g["nodes"] = {
-      {"ball", node("TetMesh", {{"target_tets", 4000}})},
-      {"wedge", node("PointConstraint", {{"kind", "degenerate"},
-                                         {"position", {-0.3, 0.05, 0.02}},
-                                         {"type", "linear"},
-                                         {"pattern", "wedge"}})},
-      {"trisector", node("PointConstraint", {{"kind", "degenerate"},
-                                             {"position", {0.3, -0.05, 0.03}},
-                                             {"type", "planar"},
-                                             {"pattern", "trisector"}})},
-      {"design", node("MergeConstraints")},
-      {"field", node("Propagate")},
-      {"topology", node("ExtractDegenerateCurves")},
-      {"vtu", node("ExportVTU", {{"path", "field.vtu"}})},
-      {"vdb", node("ExportVDB", {{"path", "field.vdb"}, {"voxel_size", 0.1}})},
-      {"exr", node("ExportEXR", {{"path", "slices/f.%03d.exr"}, {"voxel_size", 0.2}})},
-      {"curves", node("ExportCurves", {{"path", "curves.json"}})}};
+  g["nodes"] = {{"ball", node("TetMesh", {{"target_tets", 4000}})},
+                {"wedge", node("PointConstraint", {{"kind", "degenerate"},
+                                                   {"position", {-0.3, 0.05, 0.02}},
+                                                   {"type", "linear"},
+                                                   {"pattern", "wedge"}})},
+                {"trisector", node("PointConstraint", {{"kind", "degenerate"},
+                                                       {"position", {0.3, -0.05, 0.03}},
+                                                       {"type", "planar"},
+                                                       {"pattern", "trisector"}})},
+                {"design", node("MergeConstraints")},
+                {"field", node("Propagate")},
+                {"topology", node("ExtractDegenerateCurves")},
+                {"vtu", node("ExportVTU", {{"path", "field.vtu"}})},
+                {"vdb", node("ExportVDB", {{"path", "field.vdb"}, {"voxel_size", 0.1}})},
+                {"exr", node("ExportEXR", {{"path", "slices/f.%03d.exr"}, {"voxel_size", 0.2}})},
+                {"curves", node("ExportCurves", {{"path", "curves.json"}})}};
   g["links"] = {{{"from", "wedge.constraints"}, {"to", "design.constraints"}},
                 {{"from", "trisector.constraints"}, {"to", "design.constraints"}},
                 {{"from", "ball.mesh"}, {"to", "field.mesh"}},
@@ -93,7 +92,8 @@ TEST_F(CookNodes, GoodGraphWritesEveryFileAndReportsTopologyAndProfile) {
   EXPECT_FALSE(fs::exists(dir.path() / "field.vtu")) << "outputs go to --out";
   EXPECT_TRUE(has(r.out, "info: node \"ball\": ")) << r.out;
   // The topology summary after extraction: curves by type, loops, transition points.
-  const std::regex summary(R"(info: node "topology": \d+ degenerate curves? \(\d+ linear, \d+ planar)");
+  const std::regex summary(
+      R"(info: node "topology": \d+ degenerate curves? \(\d+ linear, \d+ planar)");
   EXPECT_TRUE(std::regex_search(r.out, summary)) << r.out;
   EXPECT_TRUE(has(r.out, "transition point")) << r.out;
   // One profile line per cooked node, exactly "profile <node> <type> <seconds>".

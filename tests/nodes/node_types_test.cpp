@@ -51,10 +51,10 @@ TEST(NodeTypes, EveryParameterOfEveryRegisteredTypeChangesTheHash) {
 }
 
 TEST(NodeTypes, TheFirstNodeTypesAreRegisteredUnderTheirPublicNames) {
-  for (const char* type : {"TetMesh", "FieldExpression", "PointConstraint", "MergeConstraints",
-                           "Propagate", "ExportVTU", "ExportVDB", "ExportEXR",
-                           "ExtractDegenerateCurves", "ExportCurves", "CurveConstraint",
-                           "LocalSmooth"})
+  for (const char* type :
+       {"TetMesh", "FieldExpression", "PointConstraint", "MergeConstraints", "Propagate",
+        "ExportVTU", "ExportVDB", "ExportEXR", "ExtractDegenerateCurves", "ExportCurves",
+        "CurveConstraint", "LocalSmooth"})
     EXPECT_TRUE(registry().find(type) != nullptr) << type;
 }
 
@@ -121,7 +121,8 @@ TEST(NodeTypes, BadParametersFailTheNodeNamingTheParameter) {
   test::TempDir dir("node-types-bad");
   std::string text = kDesign;
   text.replace(text.find(R"("path": "f.vtu")"), 15, R"("path": "f.vtu", "encoding": "ascii")");
-  const std::string torus = R"("params": {"primitive": "torus", "major_radius": 0.5, "minor_radius": 0.6})";
+  const std::string torus =
+      R"("params": {"primitive": "torus", "major_radius": 0.5, "minor_radius": 0.6})";
   std::string bad = text;
   bad.replace(bad.find(R"("params": {"target_tets": 5000})"), 31, torus);
   graph::CookResult r = cookText(bad, dir.path());
