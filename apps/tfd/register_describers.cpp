@@ -1,5 +1,5 @@
-// Every file kind `tfd info` can describe. The lead plugs the io-level describers in here
-// (meshes, VTU/VTP, OpenVDB, OpenEXR slices, curve JSON); see file_describers.h.
+// Every file kind `tfd info` can describe; see file_describers.h.
+#include "apps/tfd/describe_io_files.h"
 #include "apps/tfd/file_describers.h"
 
 namespace tfd::cli {
@@ -9,6 +9,11 @@ void registerFileDescribers(FileDescribers& describers, const graph::NodeRegistr
                  [&registry](const std::filesystem::path& file, std::ostream& out) {
                    return describeGraphFile(file, out, registry);
                  });
+  describers.add({".off", ".obj", ".ply", ".stl"}, "surface mesh", describeMesh);
+  describers.add({".node", ".ele", ".msh", ".vtu"}, "tet mesh", describeMesh);
+  describers.add({".vdb"}, "OpenVDB volume", describeVdb);
+  describers.add({".exr"}, "OpenEXR image", describeExr);
+  describers.add({".json"}, "degenerate curves", describeCurvesJson);
 }
 
 }  // namespace tfd::cli

@@ -193,5 +193,25 @@ TEST_F(CookNodes, OneAndTwoThreadsWriteIdenticalFiles) {
   }
 }
 
+TEST_F(CookNodes, InfoDescribesEveryExportedFile) {
+  const fs::path out = dir.path() / "out";
+  ASSERT_EQ(cook(write(designGraph()), "--quiet --out " + shellQuote(out.string())).exitCode, 0);
+  const std::pair<const char*, std::vector<std::string>> expected[] = {
+      {"field.vdb", {"format:", "OpenVDB volume", "grid T.xx:", "float", "metadata generator:"}},
+      {"slices/f.000.exr", {"OpenEXR image", "T.xx (float)", "tfd.voxelSize:", "0.2"}},
+      {"curves.json", {"tfd degenerate curves, version 1", "curves:", "transition points"}},
+      {"field.vtu", {"tet mesh", "tets:", "Euler characteristic 2"}}};
+  for (const auto& [file, needles] : expected) {
+    SCOPED_TRACE(file);
+    const CliRun r = runCli("info " + shellQuote((out / file).string()));
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    for (const std::string& needle : needles) EXPECT_TRUE(has(r.out, needle)) << r.out;
+  }
+  std::ofstream(dir.path() / "other.json") << R"({"format": "something-else"})";
+  const CliRun r = runCli("info " + shellQuote((dir.path() / "other.json").string()));
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_TRUE(has(r.err, "not a tfd-degenerate-curves file")) << r.err;
+}
+
 }  // namespace
 }  // namespace tfd::test

@@ -1,0 +1,106 @@
+// `tfd info` for the io layer's files: meshes, OpenVDB volumes, OpenEXR slices and
+// degenerate-curve JSON. Each prints label/value rows (io::formatDescription).
+#include "apps/tfd/describe_io_files.h"
+
+#include <fstream>
+#include <iomanip>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "io/exr_reader.h"
+#include "io/mesh_file.h"
+#include "io/vdb_reader.h"
+
+namespace tfd::cli {
+namespace {
+
+using Rows = std::vector<std::pair<std::string, std::string>>;
+
+template <class T>
+std::string joined(const T& values, const char* separator = " ") {
+  std::ostringstream s;
+  s << std::setprecision(6);
+  bool first = true;
+  for (const auto& v : values) {
+    if (!first) s << separator;
+    s << v;
+    first = false;
+  }
+  return s.str();
+}
+
+std::string boxText(const std::array<int, 3>& lo, const std::array<int, 3>& hi) {
+  std::ostringstream s;
+  s << "[" << joined(lo, ", ") << "] .. [" << joined(hi, ", ") << "]";
+  return s.str();
+}
+
+}  // namespace
+
+int describeMesh(const std::filesystem::path& file, std::ostream& out) {
+  out << io::formatDescription(io::describeMeshFile(file));
+  return 0;
+}
+
+int describeVdb(const std::filesystem::path& file, std::ostream& out) {
+  const io::VdbFileData data = io::readVdbFile(file, /*loadValues=*/false);
+  Rows rows{{"format", "OpenVDB volume"}, {"grids", std::to_string(data.grids.size())}};
+  for (const auto& [key, value] : data.fileMetadata)
+    rows.push_back({std::string("metadata ").append(key), value});
+  for (const io::VdbGridData& g : data.grids) {
+    std::ostringstream s;
+    s << std::setprecision(6) << g.valueType;
+    if (g.valueType.starts_with("vec")) s << " (" << g.vectorType << ")";
+    s << ", " << g.gridClass << ", voxel "
+      << joined(std::array{g.voxelSize.x(), g.voxelSize.y(), g.voxelSize.z()});
+    s << ", " << g.activeVoxelCount << " active voxels";
+    if (g.activeVoxelCount > 0) s << " in " << boxText(g.activeMin, g.activeMax);
+    rows.push_back({std::string("grid ").append(g.name), s.str()});
+  }
+  out << io::formatDescription(rows);
+  return 0;
+}
+
+int describeExr(const std::filesystem::path& file, std::ostream& out) {
+  const io::ExrImage image = io::readExrImage(file);
+  Rows rows{{"format", "OpenEXR image"},
+            {"size", std::to_string(image.width) + " x " + std::to_string(image.height)}};
+  std::vector<std::string> channels;
+  for (const auto& [name, type] : image.channelTypes) channels.push_back(name + " (" + type + ")");
+  rows.push_back({"channels", joined(channels, ", ")});
+  for (const auto& [name, a] : image.attributes)
+    if (name.starts_with("tfd."))
+      rows.push_back({name, a.numbers.empty() ? a.text : joined(a.numbers)});
+  out << io::formatDescription(rows);
+  return 0;
+}
+
+int describeCurvesJson(const std::filesystem::path& file, std::ostream& out) {
+  std::ifstream in(file);
+  if (!in) throw std::runtime_error(file.string() + ": cannot read");
+  nlohmann::json doc;
+  try {
+    doc = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& e) {
+    throw std::runtime_error(file.string() + ": invalid JSON: " + e.what());
+  }
+  if (!doc.is_object() || doc.value("format", "") != "tfd-degenerate-curves")
+    throw std::runtime_error(file.string() +
+                             ": not a tfd-degenerate-curves file (its \"format\" differs)");
+  int linear = 0, planar = 0, loops = 0, points = 0, transitions = 0;
+  for (const auto& c : doc.at("curves")) {
+    (c.at("type") == "linear" ? linear : planar) += 1;
+    loops += c.at("closed").get<bool>();
+    points += static_cast<int>(c.at("points").size());
+    for (const auto& p : c.at("pattern")) transitions += p == "transition";
+  }
+  out << io::formatDescription(
+      {{"format", "tfd degenerate curves, version " + doc.at("formatVersion").dump()},
+       {"curves", std::to_string(linear + planar) + " (" + std::to_string(linear) + " linear, " +
+                      std::to_string(planar) + " planar; " + std::to_string(loops) + " loops)"},
+       {"points",
+        std::to_string(points) + ", " + std::to_string(transitions) + " transition points"}});
+  return 0;
+}
+
+}  // namespace tfd::cli
