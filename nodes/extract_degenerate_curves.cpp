@@ -1,5 +1,6 @@
 // ExtractDegenerateCurves: the topology of a field (paper §3-4).
 #include "core/topology/extract_degenerate_curves.h"
+#include "core/topology/curve_filter.h"
 
 #include "graph/node_registry.h"
 #include "nodes/node_support.h"
@@ -29,16 +30,38 @@ void declare(graph::NodeDecl& d) {
       .doc(
           "Relative size of the deterministic perturbation that resolves non-generic faces "
           "(e.g. fields whose off-diagonal blocks vanish); 0 switches it off.");
+  d.param<std::string>("boundary_curves")
+      .choices({"keep", "drop"})
+      .doc(
+          "Curves lying entirely in the boundary surface: a boundary-conforming field "
+          "(Propagate) has many, as its normal eigenvalue crosses a tangential one along "
+          "surface curves; drop them to see the curves inside the volume.");
+  d.param<double>("min_length")
+      .byDefault(0)
+      .min(0)
+      .doc("Drop curves shorter than this (loops: by perimeter); 0 keeps all.");
 }
 
 void cook(graph::CookContext& c) {
   core::ExtractOptions o;
   o.arcSamples = c.param<int>("arc_samples");
   o.perturbation = c.param<double>("perturbation");
+  const auto field = c.input<core::TensorField>("field");
+  core::DegenerateCurves all = core::extractDegenerateCurves(*field, o, progressOf(c));
+  for (const std::string& w : all.warnings()) c.warning(w);
+  const int onBoundary = core::boundaryCurveCount(all, field->mesh());
+  core::CurveFilter filter;
+  filter.minLength = c.param<double>("min_length");
+  filter.dropBoundary = c.param<std::string>("boundary_curves") == "drop";
   auto curves = std::make_shared<const core::DegenerateCurves>(
-      core::extractDegenerateCurves(*c.input<core::TensorField>("field"), o, progressOf(c)));
-  c.info(curves->summary());
-  for (const std::string& w : curves->warnings()) c.warning(w);
+      filter.minLength > 0 || filter.dropBoundary ? core::filterCurves(all, field->mesh(), filter)
+                                                  : std::move(all));
+  std::string info = curves->summary();
+  if (onBoundary > 0)
+    info += "; " + std::to_string(onBoundary) + " of the extracted curves hug the boundary" +
+            (filter.dropBoundary ? " (dropped)" : "");
+  if (filter.minLength > 0) info += "; curves shorter than min_length dropped";
+  c.info(info);
   c.setOutput("curves", std::move(curves));
 }
 
