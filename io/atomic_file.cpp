@@ -23,13 +23,9 @@ void writeAtomically(const std::filesystem::path& path,
     }
   }
   // Keep the extension last: some libraries choose the format from it.
-  // (Appended piecewise: GCC 12 warns falsely (-Wrestrict) on "." + std::string.)
-  std::string name(1, '.');
-  name += path.stem().string();
-  name += ".tmp" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
-  name += path.extension().string();
   fs::path temp = path;
-  temp.replace_filename(name);
+  temp.replace_filename("." + path.stem().string() + ".tmp" + std::to_string(::getpid()) + "-" +
+                        std::to_string(counter++) + path.extension().string());
   try {
     write(temp);
   } catch (...) {

@@ -45,8 +45,7 @@ int describeMesh(const std::filesystem::path& file, std::ostream& out) {
 int describeVdb(const std::filesystem::path& file, std::ostream& out) {
   const io::VdbFileData data = io::readVdbFile(file, /*loadValues=*/false);
   Rows rows{{"format", "OpenVDB volume"}, {"grids", std::to_string(data.grids.size())}};
-  for (const auto& [key, value] : data.fileMetadata)
-    rows.push_back({std::string("metadata ").append(key), value});
+  for (const auto& [key, value] : data.fileMetadata) rows.push_back({"metadata " + key, value});
   for (const io::VdbGridData& g : data.grids) {
     std::ostringstream s;
     s << std::setprecision(6) << g.valueType;
@@ -55,7 +54,7 @@ int describeVdb(const std::filesystem::path& file, std::ostream& out) {
       << joined(std::array{g.voxelSize.x(), g.voxelSize.y(), g.voxelSize.z()});
     s << ", " << g.activeVoxelCount << " active voxels";
     if (g.activeVoxelCount > 0) s << " in " << boxText(g.activeMin, g.activeMax);
-    rows.push_back({std::string("grid ").append(g.name), s.str()});
+    rows.push_back({"grid " + g.name, s.str()});
   }
   out << io::formatDescription(rows);
   return 0;
