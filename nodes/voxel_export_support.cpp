@@ -2,6 +2,8 @@
 
 #include <sstream>
 
+#include "core/error.h"
+
 namespace tfd::nodes {
 
 void declareVoxelParams(graph::NodeDecl& d, const std::string& quantitiesName) {
@@ -17,11 +19,18 @@ void declareVoxelParams(graph::NodeDecl& d, const std::string& quantitiesName) {
 }
 
 double voxelSizeOf(const graph::CookContext& c, const core::TetMesh& mesh) {
-  const double h = c.param<double>("voxel_size");
-  if (h > 0) return h;
-  const double extent = (mesh.boundsMax() - mesh.boundsMin()).maxCoeff();
-  if (!(extent > 0)) throw c.paramError("voxel_size", "the mesh has no extent to size voxels by");
-  return extent / 128;
+  double h = c.param<double>("voxel_size");
+  if (h == 0) {
+    const double extent = (mesh.boundsMax() - mesh.boundsMin()).maxCoeff();
+    if (!(extent > 0)) throw c.paramError("voxel_size", "the mesh has no extent to size voxels by");
+    h = extent / 128;
+  }
+  try {
+    io::latticeForMesh(mesh, h);  // refuses sizes that give no voxel or far too many
+  } catch (const core::Error& e) {
+    throw c.paramError("voxel_size", e.what());
+  }
+  return h;
 }
 
 io::VoxelQuantities quantitiesOf(const graph::CookContext& c, const std::string& name) {

@@ -137,5 +137,27 @@ TEST(NodeTypes, BadParametersFailTheNodeNamingTheParameter) {
   EXPECT_TRUE(dir.entries().empty()) << "nothing written";
 }
 
+TEST(NodeTypes, VoxelExportsRefuseAVoxelSizeThatGivesTooManyVoxels) {
+  test::TempDir dir("node-types-voxels");
+  const graph::CookResult r = cookText(R"({
+    "format": "tfd-graph", "formatVersion": 2,
+    "nodes": {
+      "box": {"type": "TetMesh", "typeVersion": 1, "params": {"primitive": "box", "target_tets": 500}},
+      "f": {"type": "FieldExpression", "typeVersion": 1},
+      "vdb": {"type": "ExportVDB", "typeVersion": 1, "params": {"voxel_size": 1e-5}},
+      "exr": {"type": "ExportEXR", "typeVersion": 1, "params": {"voxel_size": 1e-5}}
+    },
+    "links": [{"from": "box.mesh", "to": "f.mesh"}, {"from": "f.field", "to": "vdb.field"},
+              {"from": "f.field", "to": "exr.field"}]})",
+                                       dir.path());
+  for (const char* node : {"vdb", "exr"}) {
+    SCOPED_TRACE(node);
+    EXPECT_NE(errorOf(r, node).find("parameter 'voxel_size': voxel size 1e-05 gives"),
+              std::string::npos)
+        << errorOf(r, node);
+  }
+  EXPECT_TRUE(dir.entries().empty()) << "nothing written";
+}
+
 }  // namespace
 }  // namespace tfd::nodes
