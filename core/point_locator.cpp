@@ -1,5 +1,6 @@
 #include "core/point_locator.h"
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -47,16 +48,41 @@ PointLocator::PointLocator(const TetMesh& mesh) : mesh_(mesh) {
   cellTets_.resize(cellStart_.back());
   std::vector<int> fill(cellStart_.begin(), cellStart_.end() - 1);
   forCells([&](int t, std::size_t c) { cellTets_[fill[c]++] = t; });
+  // Nearest centroid first (ties: lower tet id, so the order is deterministic): with the early
+  // exit in locate(), a query usually stops at the first or second candidate.
+  std::vector<Vec3> centroids(tets.size());
+  tbb::parallel_for(std::size_t(0), tets.size(), [&](std::size_t t) {
+    const auto& v = tets[t];
+    centroids[t] = 0.25 * (pos[v[0]] + pos[v[1]] + pos[v[2]] + pos[v[3]]);
+  });
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, cellCount, 4096), [&](const auto& range) {
+    std::vector<std::pair<double, int>> keyed;
+    for (std::size_t c = range.begin(); c != range.end(); ++c) {
+      const std::size_t i = c % dims_[0], j = c / dims_[0] % dims_[1],
+                        k = c / (std::size_t(dims_[0]) * dims_[1]);
+      const Vec3 centre = origin_ + cellSize_ * Vec3(i + 0.5, j + 0.5, k + 0.5);
+      keyed.clear();
+      for (int n = cellStart_[c]; n < cellStart_[c + 1]; ++n)
+        keyed.emplace_back((centroids[cellTets_[n]] - centre).squaredNorm(), cellTets_[n]);
+      std::sort(keyed.begin(), keyed.end());
+      for (std::size_t n = 0; n < keyed.size(); ++n) cellTets_[cellStart_[c] + n] = keyed[n].second;
+    }
+  });
 }
 
 std::array<int, 3> PointLocator::cellOf(const Vec3& p) const {
   std::array<int, 3> c;
   for (int a = 0; a < 3; ++a) {
-    c[a] = std::clamp(static_cast<int>(std::floor((p[a] - origin_[a]) / cellSize_)), 0,
-                      dims_[a] - 1);
+    c[a] =
+        std::clamp(static_cast<int>(std::floor((p[a] - origin_[a]) / cellSize_)), 0, dims_[a] - 1);
   }
   return c;
 }
+
+namespace {
+/// Smallest barycentric coordinate above which a point is inside a tet beyond rounding doubt.
+constexpr double kStrictlyInside = 1e-9;
+}  // namespace
 
 std::optional<TetLocation> PointLocator::locate(const Vec3& p, double tolerance) const {
   for (int a = 0; a < 3; ++a) {
@@ -74,6 +100,8 @@ std::optional<TetLocation> PointLocator::locate(const Vec3& p, double tolerance)
     if (m >= bestMin && (!best || m > bestMin || t < best->tet)) {
       bestMin = m;
       best = TetLocation{t, b};
+      // Strictly inside: tets do not overlap, so no other candidate can do better.
+      if (m > kStrictlyInside) break;
     }
   }
   return best;

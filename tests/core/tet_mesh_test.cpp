@@ -50,17 +50,49 @@ TEST(TetMesh, ValidationNamesTheProblem) {
 TEST(PointLocator, FindsTheContainingTet) {
   const auto mesh = makeBoxMesh(8, 7, 6, Vec3(0, 0, 0), Vec3(1, 2, 3));
   std::vector<Vec3> pts;
-  for (int i = 0; i < 2000; ++i) pts.push_back(Vec3::Random().cwiseAbs().cwiseProduct(Vec3(1, 2, 3)));
+  for (int i = 0; i < 2000; ++i)
+    pts.push_back(Vec3::Random().cwiseAbs().cwiseProduct(Vec3(1, 2, 3)));
   pts.push_back(Vec3(2, 0, 0));
   const auto found = mesh->locator().locateAll(pts);
   for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
     ASSERT_TRUE(found[i].has_value());
     EXPECT_GE(found[i]->barycentric.minCoeff(), -1e-10);
     Vec3 q = Vec3::Zero();
-    for (int k = 0; k < 4; ++k) q += found[i]->barycentric[k] * mesh->positions()[mesh->tets()[found[i]->tet][k]];
+    for (int k = 0; k < 4; ++k)
+      q += found[i]->barycentric[k] * mesh->positions()[mesh->tets()[found[i]->tet][k]];
     EXPECT_NEAR((q - pts[i]).norm(), 0, 1e-12);
   }
   EXPECT_FALSE(found.back().has_value());
+}
+
+TEST(PointLocator, AgreesWithABruteForceSearchIncludingPointsOnFacesAndVertices) {
+  // The answer is defined as the tet with the largest smallest barycentric coordinate (ties:
+  // the lower id); the grid's candidate order and early exit must not change it. Points on
+  // vertices and face centres of the structured mesh are shared by several tets.
+  const auto mesh = makeBoxMesh(4, 4, 4, Vec3(0, 0, 0), Vec3(1, 1, 1));
+  std::vector<Vec3> pts;
+  for (int i = 0; i < 300; ++i) pts.push_back(0.5 * (Vec3::Random() + Vec3::Ones()));
+  for (std::size_t v = 0; v < mesh->vertexCount(); v += 7) pts.push_back(mesh->positions()[v]);
+  for (std::size_t f = 0; f < mesh->faces().size(); f += 11) {
+    const auto& face = mesh->faces()[f];
+    pts.push_back(
+        (mesh->positions()[face[0]] + mesh->positions()[face[1]] + mesh->positions()[face[2]]) / 3);
+  }
+  for (const Vec3& p : pts) {
+    int bestTet = -1;
+    double bestMin = -1e-10;
+    for (int t = 0; t < int(mesh->tetCount()); ++t) {
+      const double m = mesh->barycentric(t, p).minCoeff();
+      if (m > bestMin + 1e-15 || (bestTet >= 0 && std::abs(m - bestMin) <= 1e-15 && t < bestTet) ||
+          (bestTet < 0 && m >= bestMin)) {
+        bestTet = t;
+        bestMin = m;
+      }
+    }
+    const auto found = mesh->locator().locate(p);
+    ASSERT_TRUE(found.has_value());
+    EXPECT_NEAR(found->barycentric.minCoeff(), bestMin, 1e-12) << p.transpose();
+  }
 }
 
 }  // namespace
