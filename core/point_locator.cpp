@@ -4,7 +4,9 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 
 #include "core/tet_mesh.h"
 
@@ -33,13 +35,19 @@ PointLocator::PointLocator(const TetMesh& mesh) : mesh_(mesh) {
   };
   const std::size_t cellCount = std::size_t(dims_[0]) * dims_[1] * dims_[2];
   cellStart_.assign(cellCount + 1, 0);
-  std::array<int, 3> lo, hi;
+  // Each tet's cell range, computed in parallel; the two passes below only walk them.
+  std::vector<std::array<int, 6>> ranges(tets.size());
+  tbb::parallel_for(std::size_t(0), tets.size(), [&](std::size_t t) {
+    std::array<int, 3> lo, hi;
+    cellRange(static_cast<int>(t), lo, hi);
+    ranges[t] = {lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]};
+  });
   const auto forCells = [&](auto&& visit) {
     for (int t = 0; t < static_cast<int>(tets.size()); ++t) {
-      cellRange(t, lo, hi);
-      for (int k = lo[2]; k <= hi[2]; ++k)
-        for (int j = lo[1]; j <= hi[1]; ++j)
-          for (int i = lo[0]; i <= hi[0]; ++i)
+      const auto& r = ranges[t];
+      for (int k = r[2]; k <= r[5]; ++k)
+        for (int j = r[1]; j <= r[4]; ++j)
+          for (int i = r[0]; i <= r[3]; ++i)
             visit(t, (std::size_t(k) * dims_[1] + j) * dims_[0] + i);
     }
   };
@@ -56,16 +64,21 @@ PointLocator::PointLocator(const TetMesh& mesh) : mesh_(mesh) {
     centroids[t] = 0.25 * (pos[v[0]] + pos[v[1]] + pos[v[2]] + pos[v[3]]);
   });
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, cellCount, 4096), [&](const auto& range) {
-    std::vector<std::pair<double, int>> keyed;
+    // Key: the float distance's bits (order-preserving for non-negative floats), then the id.
+    std::vector<std::uint64_t> keyed;
     for (std::size_t c = range.begin(); c != range.end(); ++c) {
       const std::size_t i = c % dims_[0], j = c / dims_[0] % dims_[1],
                         k = c / (std::size_t(dims_[0]) * dims_[1]);
       const Vec3 centre = origin_ + cellSize_ * Vec3(i + 0.5, j + 0.5, k + 0.5);
       keyed.clear();
       for (int n = cellStart_[c]; n < cellStart_[c + 1]; ++n)
-        keyed.emplace_back((centroids[cellTets_[n]] - centre).squaredNorm(), cellTets_[n]);
+        keyed.push_back(std::uint64_t(std::bit_cast<std::uint32_t>(
+                            static_cast<float>((centroids[cellTets_[n]] - centre).squaredNorm())))
+                            << 32 |
+                        std::uint32_t(cellTets_[n]));
       std::sort(keyed.begin(), keyed.end());
-      for (std::size_t n = 0; n < keyed.size(); ++n) cellTets_[cellStart_[c] + n] = keyed[n].second;
+      for (std::size_t n = 0; n < keyed.size(); ++n)
+        cellTets_[cellStart_[c] + n] = static_cast<int>(keyed[n] & 0xffffffffu);
     }
   });
 }
