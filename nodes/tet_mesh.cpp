@@ -3,6 +3,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/surface_check.h"
+#include "core/surface_weld.h"
 #include "io/mesh_file.h"
 #include "io/tetgen_mesher.h"
 
@@ -16,7 +18,8 @@ namespace {
 void declare(graph::NodeDecl& d) {
   d.doc(
        "A tetrahedral mesh: read from `file` (a tet mesh is used as is; a closed surface is "
-       "tetrahedralised by TetGen), or, when `file` is empty, a procedural solid "
+       "tetrahedralised by TetGen after welding vertices repeated at one position), or, when "
+       "`file` is empty, a procedural solid "
        "tetrahedralised by TetGen.")
       .category("Mesh");
   d.output<core::TetMesh>("mesh");
@@ -49,20 +52,35 @@ void declare(graph::NodeDecl& d) {
   d.param<double>("quality").byDefault(1.414).min(0).max(10).doc(
       "TetGen radius-edge ratio bound; 0 switches quality refinement off, otherwise it "
       "must be above 1.1.");
-  d.param<bool>("keep_boundary")
-      .byDefault(true)
+  d.param<std::string>("boundary")
+      .choices({"auto", "keep", "refine"})
       .doc(
-          "Keep the surface triangles as the mesh boundary (TetGen -Y); off lets TetGen "
-          "split coarse or poorly shaped surface triangles for quality.");
+          "keep: the surface triangles are the mesh boundary (TetGen -Y; the tet count then "
+          "follows the surface's resolution); refine: TetGen may split them for quality and "
+          "size; auto: keep for primitives and for surfaces already as fine as target_tets "
+          "needs, refine coarser ones (e.g. CAD exports).");
 }
 
-io::TetgenOptions tetgenOptions(const graph::CookContext& c, std::string source) {
+/// Surface edges up to this factor above the target edge length count as fine enough to keep.
+constexpr double kKeepableEdgeRatio = 1.5;
+/// TetGen's volume-bound calibration without -Y (boundary refined too; see bench/RESULTS.md).
+constexpr double kRefineVolumeFactor = 2.5;
+
+io::TetgenOptions tetgenOptions(const graph::CookContext& c, const core::SurfaceMesh& surface,
+                                bool primitive, std::string source) {
   io::TetgenOptions o;
   o.targetTets = c.param<int>("target_tets");
   o.quality = c.param<double>("quality");
   if (o.quality != 0 && o.quality <= 1.1)
     throw c.paramError("quality", "TetGen needs a radius-edge bound above 1.1 (or 0 for none)");
-  o.keepBoundary = c.param<bool>("keep_boundary");
+  const std::string boundary = c.param<std::string>("boundary");
+  o.keepBoundary = boundary == "keep";
+  if (boundary == "auto") {
+    const double wanted =
+        core::edgeLengthForTargetTets(std::abs(core::enclosedVolume(surface)), o.targetTets);
+    o.keepBoundary = primitive || core::meanEdgeLength(surface) <= kKeepableEdgeRatio * wanted;
+  }
+  if (!o.keepBoundary) o.volumeFactor = kRefineVolumeFactor;
   o.source = std::move(source);
   return o;
 }
@@ -99,15 +117,26 @@ void cook(graph::CookContext& c) {
     progress.report(0, "surface");
     const core::SurfaceMesh surface = core::makePrimitiveForTets(spec, target);
     progress.report(0.1, "tetgen");
-    mesh =
-        io::tetrahedralize(surface, tetgenOptions(c, c.param<std::string>("primitive")), progress);
+    mesh = io::tetrahedralize(
+        surface, tetgenOptions(c, surface, true, c.param<std::string>("primitive")), progress);
   } else if (io::isTetMeshFile(file)) {
     mesh = io::readTetMesh(file);
-    c.info("tet mesh read as is: target_tets, quality and keep_boundary do not apply");
+    c.info("tet mesh read as is: target_tets, quality and boundary do not apply");
   } else {
-    const core::SurfaceMesh surface = io::readSurfaceMesh(file);
+    core::SurfaceMesh surface = io::readSurfaceMesh(file);
+    const core::WeldReport weld = core::weldCoincidentVertices(surface);
+    if (weld.mergedVertices > 0)
+      c.info("welded " + std::to_string(weld.mergedVertices) +
+             " vertices repeated at the same "
+             "position" +
+             (weld.droppedTriangles > 0
+                  ? ", dropped " + std::to_string(weld.droppedTriangles) + " degenerate triangles"
+                  : ""));
     progress.report(0.1, "tetgen");
-    mesh = io::tetrahedralize(surface, tetgenOptions(c, "file '" + file.string() + "'"), progress);
+    const io::TetgenOptions o = tetgenOptions(c, surface, false, "file '" + file.string() + "'");
+    if (!o.keepBoundary)
+      c.info("surface coarser than target_tets needs: TetGen refines the boundary too");
+    mesh = io::tetrahedralize(surface, o, progress);
   }
   c.info(describe(*mesh));
   c.setOutput("mesh", std::move(mesh));

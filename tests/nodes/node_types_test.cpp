@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <set>
 
 #include "graph/evaluator.h"
@@ -157,6 +158,40 @@ TEST(NodeTypes, VoxelExportsRefuseAVoxelSizeThatGivesTooManyVoxels) {
         << errorOf(r, node);
   }
   EXPECT_TRUE(dir.entries().empty()) << "nothing written";
+}
+
+TEST(NodeTypes, TetMeshWeldsSeamsAndRefinesACoarseSurfaceToTheTargetCount) {
+  // A unit cube as a CAD tool might export it: 6 quads, every face with its own 4 vertices.
+  test::TempDir dir("node-types-cube");
+  const double corners[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                                {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+  {
+    const int quads[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                             {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+    std::ofstream obj(dir.path() / "cube.obj");
+    int next = 1;
+    for (const auto& q : quads) {
+      for (int i : q)
+        obj << "v " << corners[i][0] << " " << corners[i][1] << " " << corners[i][2] << "\n";
+      obj << "f " << next << " " << next + 1 << " " << next + 2 << " " << next + 3 << "\n";
+      next += 4;
+    }
+  }
+  const graph::CookResult r = cookText(R"({
+    "format": "tfd-graph", "formatVersion": 2,
+    "nodes": {"m": {"type": "TetMesh", "typeVersion": 1,
+                    "params": {"file": "cube.obj", "target_tets": 4000}}},
+    "links": []})",
+                                       dir.path());
+  ASSERT_TRUE(r.ok()) << errorOf(r, "m");
+  const auto mesh = r.output<core::TetMesh>("m", "mesh");
+  EXPECT_NEAR(mesh->totalVolume(), 1, 1e-9);
+  EXPECT_GT(mesh->tetCount(), 2000u);
+  EXPECT_LT(mesh->tetCount(), 8000u);
+  std::string info;
+  for (const auto& m : r.report("m")->messages) info += m.text + "\n";
+  EXPECT_NE(info.find("welded 16 vertices"), std::string::npos) << info;
+  EXPECT_NE(info.find("TetGen refines the boundary too"), std::string::npos) << info;
 }
 
 }  // namespace
