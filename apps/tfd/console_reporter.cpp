@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 
@@ -16,6 +17,8 @@ void ConsoleReporter::cookStarted(std::size_t requested, std::size_t) {
   std::lock_guard lock(mutex_);
   total_ = requested;
   done_ = 0;
+  running_.clear();
+  shown_ = 0;
 }
 
 void ConsoleReporter::nodeStarted(const std::string& node, const std::string&) {
@@ -24,6 +27,7 @@ void ConsoleReporter::nodeStarted(const std::string& node, const std::string&) {
   current_ = node;
   stage_.clear();
   fraction_ = 0;
+  running_[node] = 0;
   drawBar(true);
 }
 
@@ -34,6 +38,7 @@ void ConsoleReporter::nodeProgress(const std::string& node, double fraction,
   current_ = node;
   fraction_ = fraction;
   stage_ = std::string(stage);
+  running_[node] = fraction;
   drawBar(false);
 }
 
@@ -41,6 +46,7 @@ void ConsoleReporter::nodeFinished(const graph::NodeReport& report) {
   if (mode_ == Mode::Quiet) return;
   std::lock_guard lock(mutex_);
   ++done_;
+  running_.erase(report.node);
   if (mode_ == Mode::Bar) {
     drawBar(true);
     return;
@@ -56,10 +62,12 @@ void ConsoleReporter::drawBar(bool force) {
   if (!force && now - lastDraw_ < std::chrono::milliseconds(100)) return;
   lastDraw_ = now;
   constexpr int kWidth = 28;
-  const double overall =
-      total_ == 0 ? 1.0
-                  : (static_cast<double>(done_) + (done_ < total_ ? fraction_ : 0.0)) / total_;
-  const int filled = static_cast<int>(overall * kWidth + 0.5);
+  // Finished nodes plus the fractions of those cooking in parallel branches.
+  double partial = 0;
+  for (const auto& [node, fraction] : running_) partial += fraction;
+  const double overall = total_ == 0 ? 1.0 : (static_cast<double>(done_) + partial) / total_;
+  shown_ = std::max(shown_, std::min(overall, 1.0));
+  const int filled = static_cast<int>(shown_ * kWidth + 0.5);
   std::string bar(filled, '=');
   bar.resize(kWidth, ' ');
   char line[256];

@@ -4,6 +4,7 @@
 // calls it from TBB workers).
 #include <chrono>
 #include <cstddef>
+#include <map>
 #include <mutex>
 #include <string>
 
@@ -32,6 +33,8 @@ class ConsoleReporter : public graph::CookObserver {
   std::size_t total_ = 0, done_ = 0;
   std::string current_, stage_;
   double fraction_ = 0;
+  std::map<std::string, double> running_;  ///< fraction of every node cooking now
+  double shown_ = 0;                       ///< overall fraction drawn last (never decreases)
   bool drawn_ = false;
   std::chrono::steady_clock::time_point lastDraw_{};
 };
