@@ -16,7 +16,7 @@ void declare(graph::NodeDecl& d) {
        "the tangent. Mesh vertices within `radius` of the curve take the value of the nearest "
        "curve point's linearisation; overlapping tubes blend by distance.")
       .category("Design");
-  d.output<core::ConstraintSet>("constraints");
+  d.output<core::ConstraintSet>("constraints").doc("One curve element (its samples and tube).");
   d.param<std::vector<graph::Vec3Param>>("points")
       .byDefault({{-0.5, 0, 0}, {0, 0.2, 0}, {0.5, 0, 0}})
       .minSize(2)

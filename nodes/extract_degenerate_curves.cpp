@@ -17,7 +17,7 @@ void declare(graph::NodeDecl& d) {
        "trisector or transition.")
       .category("Topology");
   d.input<core::TensorField>("field");
-  d.output<core::DegenerateCurves>("curves");
+  d.output<core::DegenerateCurves>("curves").doc("Classified degenerate curves with stable ids.");
   d.param<int>("arc_samples")
       .byDefault(0)
       .min(0)

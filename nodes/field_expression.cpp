@@ -14,7 +14,8 @@ void declare(graph::NodeDecl& d) {
        "sin, cos, exp, sqrt, pi, ...). The traceless part is kept.")
       .category("Field");
   d.input<core::TetMesh>("mesh").doc("The volume the field lives on.");
-  d.output<core::TensorField>("field");
+  d.output<core::TensorField>("field").doc(
+      "The traceless part of the expressions at every vertex.");
   const char* defaults[6] = {"x", "-x", "0", "y", "0", "0"};
   for (int i = 0; i < 6; ++i) {
     const std::string name = core::tensorComponentNames()[i];

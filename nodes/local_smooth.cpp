@@ -21,7 +21,7 @@ void declare(graph::NodeDecl& d) {
   d.input<core::DegenerateCurves>("curves").optional().doc(
       "region curve: this field's degenerate curves, when already extracted (otherwise "
       "they are extracted here).");
-  d.output<core::TensorField>("field");
+  d.output<core::TensorField>("field").doc("The field, re-solved inside the region only.");
   d.param<std::string>("region")
       .choices({"sphere", "box", "curve"})
       .doc("sphere (center, radius), box (center, size) or curve (pick, radius).");

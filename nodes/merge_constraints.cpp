@@ -9,7 +9,7 @@ void declare(graph::NodeDecl& d) {
   d.doc("Merges design constraints (points and curves) into one set, in link order.")
       .category("Design");
   d.input<core::ConstraintSet>("constraints").multiple().doc("Any number of constraint sets.");
-  d.output<core::ConstraintSet>("constraints");
+  d.output<core::ConstraintSet>("constraints").doc("All inputs' elements, in link order.");
 }
 
 void cook(graph::CookContext& c) {

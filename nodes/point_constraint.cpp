@@ -16,7 +16,7 @@ void declare(graph::NodeDecl& d) {
        "linearisation of Eq. 2 (wedge or trisector pattern, Eq. 3). It fixes the vertices of "
        "the tet that holds it, or every vertex within `radius`.")
       .category("Design");
-  d.output<core::ConstraintSet>("constraints");
+  d.output<core::ConstraintSet>("constraints").doc("One point element.");
   d.param<graph::Vec3Param>("position").hint(graph::UiHint::Position).doc("Where the element is.");
   d.param<std::string>("kind")
       .choices({"tensor", "degenerate"})

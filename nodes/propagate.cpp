@@ -22,7 +22,7 @@ void declare(graph::NodeDecl& d) {
       .doc(
           "Design elements (merge several with MergeConstraints). Optional with "
           "curvature_boundary.");
-  d.output<core::TensorField>("field");
+  d.output<core::TensorField>("field").doc("Symmetric traceless tensor per vertex.");
   d.param<bool>("boundary_conforming")
       .byDefault(true)
       .doc(

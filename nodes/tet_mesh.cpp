@@ -22,7 +22,7 @@ void declare(graph::NodeDecl& d) {
        "`file` is empty, a procedural solid "
        "tetrahedralised by TetGen.")
       .category("Mesh");
-  d.output<core::TetMesh>("mesh");
+  d.output<core::TetMesh>("mesh").doc("Positively oriented tets with their topology.");
   d.param<std::string>("file")
       .byDefault("")
       .inputFile("*.off *.obj *.ply *.stl *.node *.ele *.msh *.vtu")
