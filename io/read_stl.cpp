@@ -3,9 +3,9 @@
 #include <cstdint>
 #include <cstring>
 #include <string>
-#include <unordered_map>
 
 #include "core/error.h"
+#include "core/surface_weld.h"
 #include "io/binary_io.h"
 #include "io/surface_readers.h"
 #include "io/text_scanner.h"
@@ -13,42 +13,17 @@
 namespace tfd::io {
 namespace {
 
-/// Welds exactly equal positions; ids in order of first appearance.
-class Welder {
- public:
-  explicit Welder(core::SurfaceMesh& mesh) : mesh_(mesh) {}
-  int id(const core::Vec3& p) {
-    // +0.0 turns -0.0 into +0.0 so both weld; the key is the exact bit pattern otherwise.
-    std::array<std::uint64_t, 3> key;
-    for (int i = 0; i < 3; ++i) {
-      const double v = p[i] + 0.0;
-      std::memcpy(&key[i], &v, 8);
-    }
-    auto [it, inserted] = ids_.emplace(key, int(mesh_.positions.size()));
-    if (inserted) mesh_.positions.push_back(p);
-    return it->second;
-  }
-  void triangle(const core::Vec3& a, const core::Vec3& b, const core::Vec3& c) {
-    const int i = id(a), j = id(b), k = id(c);
-    if (i != j && j != k && i != k) mesh_.triangles.push_back({i, j, k});
-  }
-
- private:
-  struct Hash {
-    std::size_t operator()(const std::array<std::uint64_t, 3>& k) const {
-      std::uint64_t h = 1469598103934665603ull;
-      for (auto v : k) h = (h ^ v) * 1099511628211ull ^ (v >> 29);
-      return std::size_t(h);
-    }
-  };
-  core::SurfaceMesh& mesh_;
-  std::unordered_map<std::array<std::uint64_t, 3>, int, Hash> ids_;
-};
+/// STL repeats every corner per triangle: collect the soup, weld it once at the end
+/// (core::weldCoincidentVertices).
+void addTriangle(core::SurfaceMesh& mesh, const core::Vec3 (&v)[3]) {
+  const int first = static_cast<int>(mesh.positions.size());
+  mesh.positions.insert(mesh.positions.end(), {v[0], v[1], v[2]});
+  mesh.triangles.push_back({first, first + 1, first + 2});
+}
 
 void readBinary(const std::string& data, const std::string& file, core::SurfaceMesh& mesh) {
   const std::uint32_t count = loadScalar<std::uint32_t>(data.data() + 80, Endian::Little);
-  Welder weld(mesh);
-  mesh.positions.reserve(count / 2 + 3);
+  mesh.positions.reserve(3 * std::size_t(count));
   mesh.triangles.reserve(count);
   for (std::uint32_t t = 0; t < count; ++t) {
     const char* p = data.data() + 84 + std::size_t(t) * 50 + 12;  // skip the normal
@@ -60,13 +35,12 @@ void readBinary(const std::string& data, const std::string& file, core::SurfaceM
                           " has a non-finite coordinate");
       }
     }
-    weld.triangle(v[0], v[1], v[2]);
+    addTriangle(mesh, v);
   }
 }
 
 void readAscii(const std::string& data, const std::string& file, core::SurfaceMesh& mesh) {
   TextScanner s(data, file, 0);
-  Welder weld(mesh);
   auto expect = [&](std::string_view word, std::string_view context) {
     if (!s.nextLine()) s.failAtEnd("expected '" + std::string(word) + "' " + std::string(context));
     const std::string_view t = s.token();
@@ -100,7 +74,7 @@ void readAscii(const std::string& data, const std::string& file, core::SurfaceMe
       }
       expect("endloop", "after the 3 vertices of facet " + std::to_string(facet));
       expect("endfacet", "after 'endloop' of facet " + std::to_string(facet));
-      weld.triangle(v[0], v[1], v[2]);
+      addTriangle(mesh, v);
       ++facet;
     }
   }
@@ -133,6 +107,7 @@ core::SurfaceMesh readStl(const std::filesystem::path& path) {
   } else {
     readAscii(data, file, mesh);
   }
+  core::weldCoincidentVertices(mesh);
   if (mesh.triangles.empty()) {
     throw core::Error("file '" + file + "': the mesh has no (non-degenerate) triangles");
   }
