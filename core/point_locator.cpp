@@ -24,22 +24,17 @@ PointLocator::PointLocator(const TetMesh& mesh) : mesh_(mesh) {
   }
   const auto& pos = mesh.positions();
   const auto& tets = mesh.tets();
-  const auto cellRange = [&](int t, std::array<int, 3>& lo, std::array<int, 3>& hi) {
-    Vec3 mn = pos[tets[t][0]], mx = mn;
-    for (int i = 1; i < 4; ++i) {
-      mn = mn.cwiseMin(pos[tets[t][i]]);
-      mx = mx.cwiseMax(pos[tets[t][i]]);
-    }
-    lo = cellOf(mn);
-    hi = cellOf(mx);
-  };
   const std::size_t cellCount = std::size_t(dims_[0]) * dims_[1] * dims_[2];
   cellStart_.assign(cellCount + 1, 0);
   // Each tet's cell range, computed in parallel; the two passes below only walk them.
   std::vector<std::array<int, 6>> ranges(tets.size());
   tbb::parallel_for(std::size_t(0), tets.size(), [&](std::size_t t) {
-    std::array<int, 3> lo, hi;
-    cellRange(static_cast<int>(t), lo, hi);
+    Vec3 mn = pos[tets[t][0]], mx = mn;
+    for (int i = 1; i < 4; ++i) {
+      mn = mn.cwiseMin(pos[tets[t][i]]);
+      mx = mx.cwiseMax(pos[tets[t][i]]);
+    }
+    const auto lo = cellOf(mn), hi = cellOf(mx);
     ranges[t] = {lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]};
   });
   const auto forCells = [&](auto&& visit) {

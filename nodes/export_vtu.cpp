@@ -1,6 +1,4 @@
 // ExportVTU: the field (and optionally the degenerate curves' Fig. 5 colours) for ParaView.
-#include <map>
-
 #include "core/point_locator.h"
 #include "io/vtu_field_writer.h"
 

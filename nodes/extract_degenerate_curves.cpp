@@ -33,9 +33,10 @@ void declare(graph::NodeDecl& d) {
   d.param<std::string>("boundary_curves")
       .choices({"keep", "drop"})
       .doc(
-          "Curves lying entirely in the boundary surface: a boundary-conforming field "
-          "(Propagate) has many, as its normal eigenvalue crosses a tangential one along "
-          "surface curves; drop them to see the curves inside the volume.");
+          "Curves that hug the boundary (every point within the first layer of tets): a "
+          "boundary-conforming field (Propagate) has many short ones, as its normal "
+          "eigenvalue crosses a tangential one along surface curves; drop them to see the "
+          "curves inside the volume.");
   d.param<double>("min_length")
       .byDefault(0)
       .min(0)
