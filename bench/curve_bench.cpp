@@ -18,8 +18,8 @@
 #include "core/design/curve_constraint.h"
 #include "core/design/curve_element_builder.h"
 #include "core/design/fixed_values.h"
-#include "core/design/local_smooth.h"
 #include "core/design/propagate.h"
+#include "core/edit/local_smooth.h"
 #include "core/point_locator.h"
 #include "io/tetgen_mesher.h"
 

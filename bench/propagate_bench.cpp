@@ -18,8 +18,8 @@
 #include <string>
 
 #include "core/design/propagate.h"
-#include "core/harmonic_solver.h"
-#include "core/laplacian.h"
+#include "core/solve/harmonic_solver.h"
+#include "core/solve/laplacian.h"
 #include "core/structured_mesh.h"
 #include "io/tetgen_mesher.h"
 

@@ -12,7 +12,7 @@
 #include <fstream>
 #include <string>
 
-#include "core/primitives.h"
+#include "core/surface/primitives.h"
 #include "io/tetgen_mesher.h"
 
 namespace {

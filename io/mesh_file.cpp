@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "core/error.h"
-#include "core/surface_check.h"
+#include "core/surface/surface_check.h"
 #include "io/file_bytes.h"
 #include "io/surface_readers.h"
 #include "io/surface_writers.h"

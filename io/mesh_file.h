@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/surface_mesh.h"
+#include "core/surface/surface_mesh.h"
 #include "core/tet_mesh.h"
 
 namespace tfd::io {

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "core/error.h"
-#include "core/surface_weld.h"
+#include "core/surface/surface_weld.h"
 #include "io/binary_io.h"
 #include "io/surface_readers.h"
 #include "io/text_scanner.h"

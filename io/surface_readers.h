@@ -10,7 +10,7 @@
 // ended at line 40)"), a mesh without triangles.
 #include <filesystem>
 
-#include "core/surface_mesh.h"
+#include "core/surface/surface_mesh.h"
 
 namespace tfd::io {
 

@@ -5,7 +5,7 @@
 // Every writer writes atomically (io/atomic_file.h) and throws core::Error naming the file.
 #include <filesystem>
 
-#include "core/surface_mesh.h"
+#include "core/surface/surface_mesh.h"
 #include "io/binary_io.h"
 
 namespace tfd::io {

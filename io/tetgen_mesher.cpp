@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "core/error.h"
-#include "core/surface_check.h"
+#include "core/surface/surface_check.h"
 #include "io/tet_mesh_build.h"
 
 namespace tfd::io {

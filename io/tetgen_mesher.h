@@ -5,9 +5,9 @@
 #include <string>
 #include <string_view>
 
-#include "core/primitives.h"
 #include "core/progress.h"
-#include "core/surface_mesh.h"
+#include "core/surface/primitives.h"
+#include "core/surface/surface_mesh.h"
 #include "core/tet_mesh.h"
 
 namespace tfd::io {

@@ -1,5 +1,5 @@
 // FieldExpression: a tensor field from six component expressions in x, y, z (muParser).
-#include "core/field_expression.h"
+#include "core/design/field_expression.h"
 
 #include "graph/node_registry.h"
 #include "nodes/node_support.h"

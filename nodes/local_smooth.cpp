@@ -1,6 +1,6 @@
 // LocalSmooth: re-solve the harmonic problem inside a region (paper §5, "Local field
 // smoothing"); everything outside is left bitwise unchanged.
-#include "core/design/local_smooth.h"
+#include "core/edit/local_smooth.h"
 
 #include "graph/node_registry.h"
 #include "nodes/node_support.h"

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <sstream>
 
-#include "core/surface_check.h"
-#include "core/surface_weld.h"
+#include "core/surface/surface_check.h"
+#include "core/surface/surface_weld.h"
 #include "io/mesh_file.h"
 #include "io/tetgen_mesher.h"
 

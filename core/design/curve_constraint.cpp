@@ -3,9 +3,9 @@
 #include <cmath>
 #include <sstream>
 
-#include "core/design/curve_tube.h"
 #include "core/design/fixed_values.h"
 #include "core/error.h"
+#include "core/region/curve_tube.h"
 
 namespace tfd::core {
 namespace {

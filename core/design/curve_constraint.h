@@ -7,7 +7,7 @@
 // Output: one (vertex, value, weight) contribution per tube vertex, added in ascending vertex
 // order (deterministic), and a short report.
 // Guarantees: the tube is the set of vertices within `radius` of the sampled polyline, reached
-// from the curve through the volume (see core/design/curve_tube.h for the distance used). The
+// from the curve through the volume (see core/region/curve_tube.h for the distance used). The
 // value at a tube vertex v is the linearisation at its closest polyline point q, interpolated
 // between the two neighbouring samples (origin q, frame by geodesic interpolation of the two
 // sample frames on SO(3), T0 and Jacobian linearly), evaluated at v (Eq. 2: displacement v − q

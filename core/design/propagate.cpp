@@ -8,10 +8,10 @@
 #include "core/design/apply_constraints.h"
 #include "core/design/boundary_conforming.h"
 #include "core/error.h"
-#include "core/harmonic_solver.h"
-#include "core/laplacian.h"
 #include "core/linalg/amg.h"
-#include "core/surface_curvature.h"
+#include "core/solve/harmonic_solver.h"
+#include "core/solve/laplacian.h"
+#include "core/surface/surface_curvature.h"
 
 namespace tfd::core {
 

@@ -8,7 +8,7 @@
 #include <map>
 
 #include "core/error.h"
-#include "core/primitives.h"
+#include "core/surface/primitives.h"
 #include "io/tetgen_mesher.h"
 
 namespace tfd::io {

@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "core/primitives.h"
-#include "core/surface_check.h"
+#include "core/surface/primitives.h"
+#include "core/surface/surface_check.h"
 #include "io/binary_io.h"
 #include "io/surface_readers.h"
 #include "io/surface_writers.h"

@@ -10,8 +10,8 @@
 #include <set>
 
 #include "core/error.h"
-#include "core/primitives.h"
-#include "core/surface_check.h"
+#include "core/surface/primitives.h"
+#include "core/surface/surface_check.h"
 #include "io/mesh_file.h"
 #include "io/surface_writers.h"
 

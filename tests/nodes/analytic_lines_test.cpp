@@ -5,7 +5,7 @@
 // one open curve each, within one mean edge length of the line, with the right type and pattern.
 #include <gtest/gtest.h>
 
-#include "core/field_expression.h"
+#include "core/design/field_expression.h"
 #include "core/structured_mesh.h"
 #include "core/topology/extract_degenerate_curves.h"
 #include "graph/evaluator.h"
