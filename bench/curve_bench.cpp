@@ -21,7 +21,7 @@
 #include "core/design/propagate.h"
 #include "core/edit/local_smooth.h"
 #include "core/point_locator.h"
-#include "io/tetgen_mesher.h"
+#include "io/tetgen/tetgen_mesher.h"
 
 namespace {
 

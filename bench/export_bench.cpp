@@ -10,10 +10,10 @@
 
 #include "core/point_locator.h"
 #include "core/structured_mesh.h"
-#include "io/exr_writer.h"
-#include "io/field_resample.h"
-#include "io/vdb_writer.h"
-#include "io/vtu_field_writer.h"
+#include "io/volume/exr_writer.h"
+#include "io/volume/field_resample.h"
+#include "io/volume/vdb_writer.h"
+#include "io/vtk/vtu_writer.h"
 
 namespace {
 

@@ -19,7 +19,7 @@
 
 #include "core/design/propagate.h"
 #include "core/topology/extract_degenerate_curves.h"
-#include "io/tetgen_mesher.h"
+#include "io/tetgen/tetgen_mesher.h"
 
 namespace {
 

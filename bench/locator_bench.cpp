@@ -9,7 +9,7 @@
 #include <random>
 
 #include "core/point_locator.h"
-#include "io/tetgen_mesher.h"
+#include "io/tetgen/tetgen_mesher.h"
 
 namespace {
 

@@ -21,7 +21,7 @@
 #include "core/solve/harmonic_solver.h"
 #include "core/solve/laplacian.h"
 #include "core/structured_mesh.h"
-#include "io/tetgen_mesher.h"
+#include "io/tetgen/tetgen_mesher.h"
 
 namespace {
 

@@ -13,7 +13,7 @@
 #include <string>
 
 #include "core/surface/primitives.h"
-#include "io/tetgen_mesher.h"
+#include "io/tetgen/tetgen_mesher.h"
 
 namespace {
 

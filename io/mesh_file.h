@@ -1,13 +1,12 @@
 #pragma once
 // Mesh files by extension: one entry point for nodes, the CLI (`tfd info`) and the editor.
-//   surface meshes: .off .obj .ply .stl        (io/surface_readers.h, io/surface_writers.h)
-//   tet meshes:     .node .ele .msh .vtu       (io/tet_mesh_io.h, io/vtu_field_writer.h)
+//   surface meshes: .off .obj .ply .stl        (io/mesh/surface_readers.h,
+//   io/mesh/surface_writers.h) tet meshes:     .node .ele .msh .vtu       (io/tet_mesh_io.h,
+//   io/vtk/vtu_writer.h)
 // Extensions are matched case-insensitively.
 #include <filesystem>
 #include <memory>
 #include <string>
-#include <utility>
-#include <vector>
 
 #include "core/surface/surface_mesh.h"
 #include "core/tet_mesh.h"
@@ -31,14 +30,9 @@ void writeSurfaceMesh(const std::filesystem::path& path, const core::SurfaceMesh
 /// (raw appended binary).
 void writeTetMesh(const std::filesystem::path& path, const core::TetMesh& mesh);
 
-/// A summary of a mesh file, as label/value rows in display order, e.g.
-/// {"format", "Gmsh .msh 4.1 (tet mesh)"}, {"vertices", "1234"}, {"tets", "5678"},
-/// {"volume", "4.18"}, {"boundary", "closed, Euler characteristic 2 (genus 0)"}, ...
-/// The file is read completely (and validated); throws like the readers.
-std::vector<std::pair<std::string, std::string>> describeMeshFile(
-    const std::filesystem::path& path);
-
-/// The rows above as aligned "label: value" lines.
-std::string formatDescription(const std::vector<std::pair<std::string, std::string>>& rows);
+/// The format of a mesh file as its extension and first bytes tell, e.g. "OFF",
+/// "PLY (binary_little_endian)", "STL (binary)", "Gmsh .msh 4.1 (ASCII)",
+/// "VTK XML .vtu (appended, zlib-compressed)". Reads the file; throws core::Error naming it.
+std::string meshFileFormat(const std::filesystem::path& path);
 
 }  // namespace tfd::io

@@ -1,5 +1,5 @@
 // ExportCurves: degenerate curves to .json (tfd-degenerate-curves), .vtp or .obj.
-#include "io/curve_writers.h"
+#include "io/curves/curve_writers.h"
 
 #include "graph/node_registry.h"
 #include "nodes/value_types.h"

@@ -1,5 +1,5 @@
 // ExportEXR: the field resampled on a voxel grid, one OpenEXR image per z-slice.
-#include "io/exr_writer.h"
+#include "io/volume/exr_writer.h"
 
 #include "graph/node_registry.h"
 #include "nodes/node_support.h"

@@ -1,5 +1,5 @@
 // ExportVDB: the field resampled on a voxel grid, for Houdini and Blender.
-#include "io/vdb_writer.h"
+#include "io/volume/vdb_writer.h"
 
 #include "graph/node_registry.h"
 #include "nodes/node_support.h"

@@ -1,6 +1,6 @@
 // ExportVTU: the field (and optionally the degenerate curves' Fig. 5 colours) for ParaView.
 #include "core/point_locator.h"
-#include "io/vtu_field_writer.h"
+#include "io/vtk/vtu_writer.h"
 
 #include "graph/node_registry.h"
 #include "nodes/node_support.h"

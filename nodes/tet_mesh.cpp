@@ -6,7 +6,7 @@
 #include "core/surface/surface_check.h"
 #include "core/surface/surface_weld.h"
 #include "io/mesh_file.h"
-#include "io/tetgen_mesher.h"
+#include "io/tetgen/tetgen_mesher.h"
 
 #include "graph/node_registry.h"
 #include "nodes/node_support.h"

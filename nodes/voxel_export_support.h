@@ -6,7 +6,7 @@
 #include "core/tet_mesh.h"
 #include "graph/cook_context.h"
 #include "graph/node_decl.h"
-#include "io/vdb_writer.h"
+#include "io/volume/vdb_writer.h"
 
 namespace tfd::nodes {
 

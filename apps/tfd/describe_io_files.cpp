@@ -1,5 +1,5 @@
 // `tfd info` for the io layer's files: meshes, OpenVDB volumes, OpenEXR slices and
-// degenerate-curve JSON. Each prints label/value rows (io::formatDescription).
+// degenerate-curve JSON. Each prints label/value rows (formatRows).
 #include "apps/tfd/describe_io_files.h"
 
 #include <fstream>
@@ -7,14 +7,11 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "io/exr_reader.h"
-#include "io/mesh_file.h"
-#include "io/vdb_reader.h"
+#include "io/volume/exr_reader.h"
+#include "io/volume/vdb_reader.h"
 
 namespace tfd::cli {
 namespace {
-
-using Rows = std::vector<std::pair<std::string, std::string>>;
 
 template <class T>
 std::string joined(const T& values, const char* separator = " ") {
@@ -37,8 +34,18 @@ std::string boxText(const std::array<int, 3>& lo, const std::array<int, 3>& hi) 
 
 }  // namespace
 
+std::string formatRows(const Rows& rows) {
+  std::size_t width = 0;
+  for (const auto& [label, value] : rows) width = std::max(width, label.size());
+  std::string out;
+  for (const auto& [label, value] : rows) {
+    out += label + ":" + std::string(width - label.size() + 1, ' ') + value + "\n";
+  }
+  return out;
+}
+
 int describeMesh(const std::filesystem::path& file, std::ostream& out) {
-  out << io::formatDescription(io::describeMeshFile(file));
+  out << formatRows(describeMeshFile(file));
   return 0;
 }
 
@@ -56,7 +63,7 @@ int describeVdb(const std::filesystem::path& file, std::ostream& out) {
     if (g.activeVoxelCount > 0) s << " in " << boxText(g.activeMin, g.activeMax);
     rows.push_back({"grid " + g.name, s.str()});
   }
-  out << io::formatDescription(rows);
+  out << formatRows(rows);
   return 0;
 }
 
@@ -70,7 +77,7 @@ int describeExr(const std::filesystem::path& file, std::ostream& out) {
   for (const auto& [name, a] : image.attributes)
     if (name.starts_with("tfd."))
       rows.push_back({name, a.numbers.empty() ? a.text : joined(a.numbers)});
-  out << io::formatDescription(rows);
+  out << formatRows(rows);
   return 0;
 }
 
@@ -93,7 +100,7 @@ int describeCurvesJson(const std::filesystem::path& file, std::ostream& out) {
     points += static_cast<int>(c.at("points").size());
     for (const auto& p : c.at("pattern")) transitions += p == "transition";
   }
-  out << io::formatDescription(
+  out << formatRows(
       {{"format", "tfd degenerate curves, version " + doc.at("formatVersion").dump()},
        {"curves", std::to_string(linear + planar) + " (" + std::to_string(linear) + " linear, " +
                       std::to_string(planar) + " planar; " + std::to_string(loops) + " loops)"},

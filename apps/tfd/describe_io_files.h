@@ -3,8 +3,21 @@
 // std::exception (core::Error) naming the file when it cannot be read.
 #include <filesystem>
 #include <iosfwd>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace tfd::cli {
+
+/// Label/value rows in display order, e.g. {"format", "Gmsh .msh 4.1 (ASCII) (tet mesh)"}.
+using Rows = std::vector<std::pair<std::string, std::string>>;
+/// The rows as aligned "label: value" lines.
+std::string formatRows(const Rows& rows);
+
+/// A mesh file's summary: format, counts, bounds, volume, mean edge length and the topology
+/// of its surface ("closed, Euler characteristic 2 (genus 0)"). Reads and validates the file
+/// completely; throws like the io readers.
+Rows describeMeshFile(const std::filesystem::path& path);
 
 int describeMesh(const std::filesystem::path& file, std::ostream& out);
 int describeVdb(const std::filesystem::path& file, std::ostream& out);

@@ -57,7 +57,7 @@ SurfaceMesh makeDoubleTorus(double majorRadius, double minorRadius, double edgeL
 
 /// Surface edge length that makes a quality tet mesh of a solid of `volume` have about
 /// `targetTets` tets when its interior edges match the surface edges (calibrated against
-/// TetGen, see io/tetgen_mesher.h).
+/// TetGen, see io/tetgen/tetgen_mesher.h).
 double edgeLengthForTargetTets(double volume, double targetTets);
 
 /// makePrimitive(spec, edgeLengthForTargetTets(primitiveVolume(spec), targetTets)).

@@ -251,4 +251,22 @@ void flipOrientation(SurfaceMesh& mesh) {
   for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
 }
 
+int connectedComponents(const SurfaceMesh& s) {
+  std::vector<int> parent(s.positions.size());
+  for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = int(i);
+  auto find = [&](int i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  std::vector<char> used(s.positions.size(), 0);
+  for (const auto& t : s.triangles) {
+    for (int v : t) used[v] = 1;
+    parent[find(t[1])] = find(t[0]);
+    parent[find(t[2])] = find(t[0]);
+  }
+  int count = 0;
+  for (std::size_t i = 0; i < parent.size(); ++i) count += used[i] && find(int(i)) == int(i);
+  return count;
+}
+
 }  // namespace tfd::core

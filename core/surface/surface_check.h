@@ -31,6 +31,10 @@ double meanEdgeLength(const SurfaceMesh& mesh);
 /// connected component).
 long eulerCharacteristic(const SurfaceMesh& mesh);
 
+/// Number of connected components (triangles sharing a vertex are connected); vertices no
+/// triangle uses are not counted.
+int connectedComponents(const SurfaceMesh& mesh);
+
 /// Removes vertices no triangle references, keeping the order of the others.
 void removeUnreferencedVertices(SurfaceMesh& mesh);
 

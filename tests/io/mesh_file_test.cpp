@@ -1,15 +1,14 @@
-// Format dispatch by extension and the mesh file description used by `tfd info`.
+// Format dispatch by extension and format detection.
 #include "io/mesh_file.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <filesystem>
-#include <map>
 
 #include "core/error.h"
 #include "core/surface/primitives.h"
-#include "io/tetgen_mesher.h"
+#include "io/tetgen/tetgen_mesher.h"
 
 namespace tfd::io {
 namespace {
@@ -73,29 +72,16 @@ TEST_F(MeshFile, EveryTetExtensionRoundTrips) {
   }
 }
 
-TEST_F(MeshFile, DescriptionsReportCountsAndTopology) {
-  const fs::path torus = dir_ / "torus.ply";
-  const core::SurfaceMesh surface = core::makeTorus(1.0, 0.4, 0.2);
-  writeSurfaceMesh(torus, surface);
-  auto rows = describeMeshFile(torus);
-  std::map<std::string, std::string> info(rows.begin(), rows.end());
-  EXPECT_EQ(info["format"], "PLY (binary_little_endian) (surface mesh)");
-  EXPECT_EQ(info["triangles"], std::to_string(surface.triangles.size()));
-  EXPECT_NE(info["closed"].find("Euler characteristic 0 (genus 1)"), std::string::npos)
-      << info["closed"];
-
-  const auto mesh = meshPrimitive("double_torus", 3000);
-  const fs::path msh = dir_ / "dt.msh";
-  writeTetMesh(msh, *mesh);
-  rows = describeMeshFile(msh);
-  info = std::map<std::string, std::string>(rows.begin(), rows.end());
-  EXPECT_EQ(info["format"], "Gmsh .msh 4.1 (ASCII) (tet mesh)");
-  EXPECT_EQ(info["tets"], std::to_string(mesh->tetCount()));
-  EXPECT_NE(info["boundary"].find("1 component, Euler characteristic -2 (genus 2)"),
-            std::string::npos)
-      << info["boundary"];
-  const std::string text = formatDescription(rows);
-  EXPECT_NE(text.find("tets:"), std::string::npos);
+TEST_F(MeshFile, FormatsAreDetectedFromTheFirstBytes) {
+  const fs::path ply = dir_ / "torus.ply";
+  writeSurfaceMesh(ply, core::makeTorus(1.0, 0.4, 0.2));
+  EXPECT_EQ(meshFileFormat(ply), "PLY (binary_little_endian)");
+  const fs::path stl = dir_ / "torus.stl";
+  writeSurfaceMesh(stl, core::makeTorus(1.0, 0.4, 0.2));
+  EXPECT_EQ(meshFileFormat(stl), "STL (binary)");
+  const fs::path msh = dir_ / "s.msh";
+  writeTetMesh(msh, *meshPrimitive("sphere", 2000));
+  EXPECT_EQ(meshFileFormat(msh), "Gmsh .msh 4.1 (ASCII)");
 }
 
 }  // namespace

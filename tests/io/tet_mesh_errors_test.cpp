@@ -7,7 +7,9 @@
 
 #include "core/error.h"
 #include "core/structured_mesh.h"
-#include "io/tet_mesh_io.h"
+#include "io/mesh/gmsh.h"
+#include "io/tetgen/node_ele.h"
+#include "io/vtk/vtu_reader.h"
 
 namespace tfd::io {
 namespace {

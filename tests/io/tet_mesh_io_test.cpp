@@ -9,9 +9,11 @@
 #include "core/structured_mesh.h"
 #include "io/base64.h"
 #include "io/binary_io.h"
-#include "io/tet_mesh_io.h"
-#include "io/tetgen_mesher.h"
-#include "io/vtu_field_writer.h"
+#include "io/mesh/gmsh.h"
+#include "io/tetgen/node_ele.h"
+#include "io/tetgen/tetgen_mesher.h"
+#include "io/vtk/vtu_reader.h"
+#include "io/vtk/vtu_writer.h"
 
 namespace tfd::io {
 namespace {

@@ -9,7 +9,7 @@
 #include "core/design/propagate.h"
 #include "core/edit/local_smooth.h"
 #include "core/topology/extract_degenerate_curves.h"
-#include "io/tetgen_mesher.h"
+#include "io/tetgen/tetgen_mesher.h"
 
 namespace tfd::core {
 namespace {

@@ -11,7 +11,7 @@
 #include "core/design/boundary_conforming.h"
 #include "core/error.h"
 #include "core/solve/laplacian.h"
-#include "io/tetgen_mesher.h"
+#include "io/tetgen/tetgen_mesher.h"
 #include "tests/core/solve/solver_test_meshes.h"
 
 namespace tfd::core {

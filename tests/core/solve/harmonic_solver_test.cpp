@@ -12,7 +12,7 @@
 #include "core/error.h"
 #include "core/linalg/amg.h"
 #include "core/solve/laplacian.h"
-#include "io/tetgen_mesher.h"
+#include "io/tetgen/tetgen_mesher.h"
 #include "tests/core/solve/solver_test_meshes.h"
 
 namespace tfd::core {

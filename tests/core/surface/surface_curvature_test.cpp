@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "core/structured_mesh.h"
-#include "io/tetgen_mesher.h"
+#include "io/tetgen/tetgen_mesher.h"
 
 namespace tfd::core {
 namespace {

@@ -6,7 +6,7 @@
 #include "core/error.h"
 #include "core/topology/curve_filter.h"
 #include "core/topology/extract_degenerate_curves.h"
-#include "io/tetgen_mesher.h"
+#include "io/tetgen/tetgen_mesher.h"
 
 namespace tfd::core {
 namespace {

@@ -12,7 +12,7 @@
 
 #include "core/topology/extract_degenerate_curves.h"
 #include "core/topology/traceless5.h"
-#include "io/tetgen_mesher.h"
+#include "io/tetgen/tetgen_mesher.h"
 #include "tests/core/topology/topology_test_support.h"
 
 namespace tfd::core::topology {

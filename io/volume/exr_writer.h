@@ -1,0 +1,71 @@
+#pragma once
+// Export of a TensorField to a sequence of OpenEXR images, one per z-slice of a voxel grid
+// (EXR has no 3D volume convention; compositors read numbered sequences).
+//
+// Files: the caller's path pattern with one frame placeholder, either printf-like (`%d`,
+// `%04d`: zero-padded to the given width) or a run of `#` (`####`: zero-padded to the run's
+// length). Slice s = 0 … n−1 (bottom to top, z ascending) gets frame number firstFrame + s.
+// A literal percent sign is written `%%`.
+//
+// Pixels: slice s is the z = const plane through voxel centres of index k = lattice.min.z + s
+// (field_resample.h). Pixel (column c, row r) is voxel (i, j) = (min.x + c, max.y − r): row 0
+// is the top of the image, at the largest y, so a viewer shows the slice as seen from +z with
+// y up. Its world centre is firstPixel + c·columnStep + r·rowStep (header attributes below).
+//
+// Channels, 32-bit float (EXR sorts channels by name: select them by name):
+//   T.xx T.yy T.zz T.xy T.yz T.xz   quantity "tensor" (VTK order; "T" is the tensor name)
+//   T.eigval.x/.y/.z                "eigenvalues" λ1 ≥ λ2 ≥ λ3
+//   T.e1.x/.y/.z, T.e2.…, T.e3.…    "eigenvectors" (unit, sign arbitrary)
+//   density                         "density"
+//   A                               mask: 1 where the voxel centre is inside the mesh (optional)
+// Pixels outside the mesh are 0 in every channel.
+//
+// Header attributes (besides the standard ones; compression ZIP, lossless):
+//   tfd.voxelSize (double), tfd.origin (v3d, world centre of voxel index (0,0,0)),
+//   tfd.indexMin / tfd.indexMax (v3i, the lattice's index box), tfd.axis (string "z"),
+//   tfd.sliceIndex (int, voxel index k), tfd.frame (int), tfd.sliceCount (int),
+//   tfd.z (double, world z of the slice), tfd.firstPixel (v3d), tfd.columnStep (v3d, +x·h),
+//   tfd.rowStep (v3d, −y·h), tfd.tensorComponents (string "xx,yy,zz,xy,yz,xz"),
+//   tfd.generator, tfd.source (strings; source only when given).
+//
+// Atomicity: every slice is first written (through io::writeAtomically) to a hidden file
+// beside its target; only when all slices are written are they renamed into place. If any
+// slice fails or the export is cancelled, the hidden files and any slice already renamed are
+// removed, so no new slice file is left. Slice files of an earlier, longer export with the
+// same pattern are not removed.
+#include <filesystem>
+#include <string>
+
+#include "core/progress.h"
+#include "core/tensor_field.h"
+#include "io/volume/field_resample.h"
+#include "io/volume/vdb_writer.h"
+#include "io/volume/voxel_quantities.h"
+
+namespace tfd::io {
+
+struct ExrExportOptions {
+  double voxelSize = 0;                    ///< world units per voxel; must be > 0
+  core::Vec3 origin = core::Vec3::Zero();  ///< world position of voxel (0, 0, 0)'s centre
+  VoxelQuantities quantities;              ///< default: the tensor only
+  std::string tensorName = "T";
+  bool mask = true;    ///< add the channel "A" (1 inside, 0 outside)
+  int firstFrame = 0;  ///< frame number of the lowest slice
+  double maxVoxels = kDefaultMaxVoxels;
+  std::string generator = "tfd";
+  std::string source;
+};
+
+/// `pattern` with its frame placeholder replaced by `frame`. Throws core::Error naming the
+/// pattern when it has no placeholder or more than one.
+std::string expandFramePattern(const std::string& pattern, int frame);
+
+/// Writes one EXR file per z-slice (see above). Throws core::Error for a bad pattern or voxel
+/// size, a grid above maxVoxels, no quantity selected, or a slice that cannot be written
+/// (naming the file); core::Cancelled when cancelled. Slices are computed in parallel over
+/// rows, each pixel on its own: files are identical for any thread count.
+VoxelExportStats writeFieldExrSlices(const std::string& pattern, const core::TensorField& field,
+                                     const ExrExportOptions& options,
+                                     const core::Progress& progress = core::Progress());
+
+}  // namespace tfd::io

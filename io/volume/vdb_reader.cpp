@@ -1,0 +1,98 @@
+#include "io/volume/vdb_reader.h"
+
+#include <openvdb/openvdb.h>
+
+#include "core/error.h"
+#include "io/volume/vdb_support.h"
+
+namespace tfd::io {
+
+namespace {
+
+std::map<std::string, std::string> metadataText(const openvdb::MetaMap& meta) {
+  std::map<std::string, std::string> out;
+  for (auto it = meta.beginMeta(); it != meta.endMeta(); ++it) {
+    out[it->first] = it->second ? it->second->str() : std::string();
+  }
+  return out;
+}
+
+std::array<double, 3> asArray(float v) { return {v, 0, 0}; }
+std::array<double, 3> asArray(double v) { return {v, 0, 0}; }
+std::array<double, 3> asArray(int v) { return {double(v), 0, 0}; }
+template <typename T>
+std::array<double, 3> asArray(const openvdb::math::Vec3<T>& v) {
+  return {double(v[0]), double(v[1]), double(v[2])};
+}
+
+template <typename GridT>
+bool loadValues(const openvdb::GridBase& base, VdbGridData& out) {
+  const auto* grid = dynamic_cast<const GridT*>(&base);
+  if (!grid) return false;
+  out.background = asArray(grid->background());
+  for (auto it = grid->cbeginValueOn(); it; ++it) {
+    if (it.isVoxelValue()) {
+      const auto c = it.getCoord();
+      out.activeVoxels.push_back({{c.x(), c.y(), c.z()}, asArray(*it)});
+    } else {
+      openvdb::CoordBBox box;
+      it.getBoundingBox(box);
+      for (auto c = box.begin(); c; ++c) {
+        out.activeVoxels.push_back({{(*c).x(), (*c).y(), (*c).z()}, asArray(*it)});
+      }
+    }
+  }
+  for (auto leaf = grid->tree().cbeginLeaf(); leaf; ++leaf) {
+    for (auto it = leaf->cbeginValueOff(); it; ++it) {
+      if (!openvdb::math::isExactlyEqual(*it, grid->background())) ++out.inactiveNonBackground;
+    }
+  }
+  out.valuesLoaded = true;
+  return true;
+}
+
+}  // namespace
+
+VdbFileData readVdbFile(const std::filesystem::path& path, bool withValues) {
+  initializeOpenVdb();
+  VdbFileData data;
+  try {
+    openvdb::io::File file(path.string());
+    file.open(false);  // read everything now; the file is closed at the end of this scope
+    data.fileMetadata = metadataText(*file.getMetadata());
+    const openvdb::GridPtrVecPtr grids = file.getGrids();
+    file.close();
+    for (const auto& grid : *grids) {
+      VdbGridData g;
+      g.name = grid->getName();
+      g.valueType = grid->valueType();
+      g.gridClass = openvdb::GridBase::gridClassToString(grid->getGridClass());
+      g.vectorType = openvdb::GridBase::vecTypeToString(grid->getVectorType());
+      g.saveFloatAsHalf = grid->saveFloatAsHalf();
+      g.metadata = metadataText(*grid);
+      const auto& xf = grid->constTransform();
+      g.linearTransform = xf.isLinear();
+      const openvdb::Vec3d vs = xf.voxelSize();
+      g.voxelSize = core::Vec3(vs[0], vs[1], vs[2]);
+      const openvdb::Vec3d o = xf.indexToWorld(openvdb::Vec3d(0, 0, 0));
+      g.indexOrigin = core::Vec3(o[0], o[1], o[2]);
+      g.activeVoxelCount = grid->activeVoxelCount();
+      const openvdb::CoordBBox box = grid->evalActiveVoxelBoundingBox();
+      if (!box.empty()) {
+        g.activeMin = {box.min().x(), box.min().y(), box.min().z()};
+        g.activeMax = {box.max().x(), box.max().y(), box.max().z()};
+      }
+      if (withValues) {
+        loadValues<openvdb::FloatGrid>(*grid, g) || loadValues<openvdb::DoubleGrid>(*grid, g) ||
+            loadValues<openvdb::Vec3SGrid>(*grid, g) || loadValues<openvdb::Vec3DGrid>(*grid, g) ||
+            loadValues<openvdb::Int32Grid>(*grid, g);
+      }
+      data.grids.push_back(std::move(g));
+    }
+  } catch (const openvdb::Exception& e) {
+    throw core::Error("cannot read VDB file '" + path.string() + "': " + e.what());
+  }
+  return data;
+}
+
+}  // namespace tfd::io

@@ -1,0 +1,202 @@
+#include "io/volume/vdb_writer.h"
+
+#include <openvdb/openvdb.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <memory>
+#include <mutex>
+#include <vector>
+
+#include "core/error.h"
+#include "io/atomic_file.h"
+#include "io/volume/vdb_support.h"
+
+namespace tfd::io {
+
+namespace {
+
+using FloatLeaf = openvdb::FloatTree::LeafNodeType;
+using Vec3Leaf = openvdb::Vec3STree::LeafNodeType;
+
+constexpr int kLeafDim = int(FloatLeaf::DIM);  // 8
+static_assert(kLeafDim == int(Vec3Leaf::DIM));
+
+/// One output grid: which float channels of VoxelQuantities::evaluate it takes.
+struct GridPlan {
+  std::string name;
+  int firstChannel = 0;
+  bool vector = false;  ///< three channels into a Vec3SGrid, else one into a FloatGrid
+  bool tensorDerived = true;
+  std::string component;  ///< "xx"… for the six tensor grids
+};
+
+std::vector<GridPlan> planGrids(const VoxelQuantities& q, const std::string& tensorName) {
+  std::vector<GridPlan> plans;
+  int channel = 0;
+  if (q.tensor) {
+    for (const char* c : {"xx", "yy", "zz", "xy", "yz", "xz"}) {
+      plans.push_back({tensorName + "." + c, channel++, false, true, c});
+    }
+  }
+  if (q.eigenvalues) {
+    plans.push_back({tensorName + ".eigval", channel, true, true, {}});
+    channel += 3;
+  }
+  if (q.eigenvectors) {
+    for (const char* e : {".e1", ".e2", ".e3"}) {
+      plans.push_back({tensorName + e, channel, true, true, {}});
+      channel += 3;
+    }
+  }
+  if (q.density) plans.push_back({"density", channel++, false, false, {}});
+  return plans;
+}
+
+/// The leaves one 8³ block produced (empty when no voxel centre of the block is inside).
+struct BlockLeaves {
+  std::vector<std::unique_ptr<FloatLeaf>> floats;
+  std::vector<std::unique_ptr<Vec3Leaf>> vectors;
+  std::size_t active = 0;
+};
+
+/// Floor division by the leaf size, valid for negative indices.
+int leafBlock(int index) { return index >= 0 ? index / kLeafDim : -((-index - 1) / kLeafDim) - 1; }
+
+}  // namespace
+
+VoxelExportStats writeFieldVdb(const std::filesystem::path& path, const core::TensorField& field,
+                               const VdbExportOptions& options, const core::Progress& progress) {
+  const VoxelQuantities& quantities = options.quantities;
+  if (quantities.channelCount() == 0) {
+    throw core::Error("VDB export of '" + path.string() + "': no quantity selected");
+  }
+  VoxelExportStats stats;
+  stats.lattice =
+      latticeForMesh(field.mesh(), options.voxelSize, options.origin, options.maxVoxels);
+  const VoxelLattice& lattice = stats.lattice;
+  initializeOpenVdb();
+
+  const std::vector<GridPlan> plans = planGrids(quantities, options.tensorName);
+  const int channels = quantities.channelCount();
+  int floatGrids = 0, vectorGrids = 0;
+  for (const auto& p : plans) (p.vector ? vectorGrids : floatGrids)++;
+
+  const auto transform = openvdb::math::Transform::createLinearTransform(lattice.voxelSize);
+  transform->postTranslate(
+      openvdb::Vec3d(lattice.origin.x(), lattice.origin.y(), lattice.origin.z()));
+  std::vector<openvdb::FloatGrid::Ptr> floatOut;
+  std::vector<openvdb::Vec3SGrid::Ptr> vectorOut;
+  openvdb::GridPtrVec grids;
+  for (const auto& p : plans) {
+    openvdb::GridBase::Ptr grid;
+    if (p.vector) {
+      auto g = openvdb::Vec3SGrid::create(openvdb::Vec3s(0, 0, 0));
+      g->setVectorType(openvdb::VEC_INVARIANT);
+      vectorOut.push_back(g);
+      grid = g;
+    } else {
+      auto g = openvdb::FloatGrid::create(0.0f);
+      floatOut.push_back(g);
+      grid = g;
+    }
+    grid->setName(p.name);
+    grid->setTransform(transform->copy());
+    grid->setSaveFloatAsHalf(false);
+    grid->setGridClass(p.tensorDerived ? openvdb::GRID_UNKNOWN : openvdb::GRID_FOG_VOLUME);
+    if (p.tensorDerived) {
+      grid->insertMeta("tensor_components", openvdb::StringMetadata("xx,yy,zz,xy,yz,xz"));
+    }
+    if (!p.component.empty()) grid->insertMeta("component", openvdb::StringMetadata(p.component));
+    grids.push_back(grid);
+  }
+
+  // Leaf blocks covering the lattice, processed one z-layer of blocks at a time.
+  const std::array<int, 3> blockMin{leafBlock(lattice.min[0]), leafBlock(lattice.min[1]),
+                                    leafBlock(lattice.min[2])};
+  const std::array<int, 3> blockMax{leafBlock(lattice.max[0]), leafBlock(lattice.max[1]),
+                                    leafBlock(lattice.max[2])};
+  const int nbx = blockMax[0] - blockMin[0] + 1;
+  const int nby = blockMax[1] - blockMin[1] + 1;
+  const int layers = blockMax[2] - blockMin[2] + 1;
+  field.mesh().locator();  // build once, outside the parallel loop
+  std::vector<BlockLeaves> layer(std::size_t(nbx) * nby);
+  for (int bz = blockMin[2]; bz <= blockMax[2]; ++bz) {
+    progress.throwIfCancelled();
+    progress.report(double(bz - blockMin[2]) / layers, "sampling voxels");
+    tbb::parallel_for(0, nbx * nby, [&](int b) {
+      if (progress.cancelled()) return;
+      BlockLeaves& out = layer[b];
+      const openvdb::Coord leafOrigin((blockMin[0] + b % nbx) * kLeafDim,
+                                      (blockMin[1] + b / nbx) * kLeafDim, bz * kLeafDim);
+      std::vector<float> values(channels);
+      RowSampler sampler(field);
+      for (int k = std::max(leafOrigin.z(), lattice.min[2]);
+           k <= std::min(leafOrigin.z() + kLeafDim - 1, lattice.max[2]); ++k) {
+        for (int j = std::max(leafOrigin.y(), lattice.min[1]);
+             j <= std::min(leafOrigin.y() + kLeafDim - 1, lattice.max[1]); ++j) {
+          for (int i = std::max(leafOrigin.x(), lattice.min[0]);
+               i <= std::min(leafOrigin.x() + kLeafDim - 1, lattice.max[0]); ++i) {
+            const core::Vec3 p = lattice.centre(i, j, k);
+            const VoxelSample sample = sampler(p);
+            if (!sample.inside()) continue;
+            if (out.active++ == 0) {
+              for (int g = 0; g < floatGrids; ++g)
+                out.floats.push_back(std::make_unique<FloatLeaf>(leafOrigin, 0.0f, false));
+              for (int g = 0; g < vectorGrids; ++g) {
+                out.vectors.push_back(
+                    std::make_unique<Vec3Leaf>(leafOrigin, openvdb::Vec3s(0, 0, 0), false));
+              }
+            }
+            quantities.evaluate(p, sample, values.data());
+            const openvdb::Index offset = FloatLeaf::coordToOffset(openvdb::Coord(i, j, k));
+            int f = 0, v = 0;
+            for (const auto& plan : plans) {
+              const float* c = values.data() + plan.firstChannel;
+              if (plan.vector) {
+                out.vectors[v++]->setValueOn(offset, openvdb::Vec3s(c[0], c[1], c[2]));
+              } else {
+                out.floats[f++]->setValueOn(offset, c[0]);
+              }
+            }
+          }
+        }
+      }
+    });
+    progress.throwIfCancelled();
+    // Serial insertion in block order: the trees do not depend on the thread count.
+    for (auto& block : layer) {
+      for (int g = 0; g < int(block.floats.size()); ++g)
+        floatOut[g]->tree().addLeaf(block.floats[g].release());
+      for (int g = 0; g < int(block.vectors.size()); ++g)
+        vectorOut[g]->tree().addLeaf(block.vectors[g].release());
+      stats.activeVoxels += block.active;
+      block = BlockLeaves();
+    }
+  }
+  progress.throwIfCancelled();
+  progress.report(1.0, "writing");
+
+  openvdb::MetaMap fileMeta;
+  fileMeta.insertMeta("generator", openvdb::StringMetadata(options.generator));
+  if (!options.source.empty()) {
+    fileMeta.insertMeta("source", openvdb::StringMetadata(options.source));
+  }
+  fileMeta.insertMeta("tensor_components", openvdb::StringMetadata("xx,yy,zz,xy,yz,xz"));
+  fileMeta.insertMeta("voxel_convention",
+                      openvdb::StringMetadata("voxel (i,j,k) is centred on world = origin + "
+                                              "voxelSize * (i,j,k)"));
+  writeAtomically(path, [&](const std::filesystem::path& temp) {
+    try {
+      openvdb::io::File file(temp.string());
+      file.write(grids, fileMeta);
+      file.close();
+    } catch (const openvdb::Exception& e) {
+      throw core::Error("cannot write VDB file '" + path.string() + "': " + e.what());
+    }
+  });
+  stats.filesWritten = 1;
+  return stats;
+}
+
+}  // namespace tfd::io
