@@ -2,9 +2,9 @@
 #include "io/volume/exr_writer.h"
 
 #include "graph/node_registry.h"
+#include "nodes/export/voxel_export_support.h"
 #include "nodes/node_support.h"
 #include "nodes/value_types.h"
-#include "nodes/voxel_export_support.h"
 
 namespace tfd::nodes {
 namespace {

@@ -1,4 +1,4 @@
-#include "nodes/voxel_export_support.h"
+#include "nodes/export/voxel_export_support.h"
 
 #include <sstream>
 
