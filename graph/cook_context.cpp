@@ -60,6 +60,15 @@ void CookContext::setOutputValue(std::string_view port, Value value) {
   outputs_[i] = std::move(value);
 }
 
+void CookContext::wroteFile(std::filesystem::path path) {
+  if (!decl_.hasSideEffects())
+    throw NodeError("node type " + decl_.typeName() +
+                    " reported a written file but is not declared sideEffect()");
+  if (path.empty()) throw NodeError("reported writing a file with an empty path");
+  if (std::find(writtenFiles_.begin(), writtenFiles_.end(), path) == writtenFiles_.end())
+    writtenFiles_.push_back(std::move(path));
+}
+
 void CookContext::progress(double fraction, std::string_view stage) const {
   if (progress_) progress_(std::clamp(fraction, 0.0, 1.0), stage);
 }

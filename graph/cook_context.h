@@ -12,6 +12,10 @@
 //     c.info("fixed 120 vertices");
 //   }
 //
+// A side-effect node (NodeDecl::sideEffect, the exporters) calls c.wroteFile(path) for every
+// file it wrote, after writing it; the evaluator records the files' size and modification time
+// and answers "which files did this cook write" (NodeReport::files, CookResult::writtenFiles).
+//
 // Errors: throw graph::NodeError (or core::Error, or any std::exception); the message becomes
 // the node's error. Misuse (unknown port/parameter name, wrong C++ type) throws NodeError too,
 // naming the port or parameter. A CookContext is used by one thread at a time, except
@@ -98,6 +102,12 @@ class CookContext {
   }
   void setOutputValue(std::string_view port, Value value);
 
+  // ---- files (side-effect nodes only)
+  /// Records a file this cook wrote (call it after the file is complete). Throws NodeError for
+  /// a node type not declared sideEffect(). Reporting a file twice keeps the first.
+  void wroteFile(std::filesystem::path path);
+  const std::vector<std::filesystem::path>& writtenFiles() const { return writtenFiles_; }
+
   // ---- messages, progress, cancellation
   void info(std::string text) { messages_.push_back({Severity::Info, std::move(text)}); }
   void warning(std::string text) { messages_.push_back({Severity::Warning, std::move(text)}); }
@@ -138,6 +148,7 @@ class CookContext {
   std::vector<std::vector<Value>> inputs_;
   std::vector<Value> outputs_;
   std::vector<NodeMessage> messages_;
+  std::vector<std::filesystem::path> writtenFiles_;
   const std::atomic<bool>* cancel_;
   ProgressCallback progress_;
 };

@@ -4,14 +4,27 @@
 // cook() takes the requested nodes (default: every node whose outputs feed no link, i.e. the
 // sinks/exporters and dangling results, which together pull the whole graph) and their
 // upstream closure. Nodes whose key (node_keys.h) is in the cache are not cooked; the others
-// cook as soon as their inputs are ready, independent branches in parallel (TBB task_group).
-// Each node's outputs depend only on its parameters and inputs, so results are identical for
-// any thread count and schedule.
+// cook as soon as their inputs are ready.
 //
-// Failures: any std::exception from a node's cook becomes that node's error (state Failed);
-// downstream nodes get state UpstreamFailed with the error "input 'field' failed upstream in
-// node \"X\"" and are not cooked; unrelated branches still cook. A required input without a
-// link fails its node ("required input 'mesh' is not connected").
+// Phases (cook_phases.h): gather decides, single-threaded, which requested nodes to cook
+// (keys, cache hits, side-effect files still intact); run cooks them, independent branches in
+// parallel (TBB task_group); store inserts the results into the cache in topological order and
+// assembles the CookResult. Each node's outputs and messages depend only on its parameters and
+// inputs, so the result (values, states, messages, their order) is identical for any thread
+// count and schedule.
+//
+// Failures: any std::exception from a node's cook becomes that node's error (state Failed,
+// message kind CookFailed); downstream nodes get state UpstreamFailed with one message of kind
+// UpstreamFailed per failed input link (port order, then link order; port and failing node as
+// fields, text "input 'field' failed upstream in node \"X\"") and are not cooked; unrelated
+// branches still cook. A required input without a link fails its node (kind MissingInput,
+// "required input 'mesh' is not connected").
+//
+// Side-effect nodes (NodeDecl::sideEffect, the exporters) report the files they wrote
+// (CookContext::wroteFile); their size and modification time are kept with the cache entry. A
+// later cook of the same Evaluator re-runs such a node, although its key is cached, when one
+// of those files is missing or its size or modification time differs; otherwise the files are
+// left alone (not rewritten).
 //
 // Cancellation: set *CookOptions::cancel. Nodes not yet started are skipped, a running node
 // sees CookContext::cancelFlag(); any node that finishes (normally or by throwing) while the
@@ -25,6 +38,7 @@
 #include <string_view>
 #include <vector>
 
+#include "graph/file_stamp.h"
 #include "graph/graph.h"
 #include "graph/hash.h"
 #include "graph/node_message.h"
@@ -50,12 +64,22 @@ struct NodeReport {
   double seconds = 0;                 ///< wall time of this cook (Cached: of the original cook)
   bool cookCalled = false;            ///< the node's cook function ran in this cook
   Hash key;
-  std::string failedNode;          ///< UpstreamFailed: the node whose failure reached here
+  std::string failedNode;  ///< UpstreamFailed: the (first) node whose failure reached here
+  /// Side-effect nodes. Cooked: the files this cook wrote, in the order the node reported
+  /// them. Cached: the files of the cook that produced the entry, found unchanged on disk.
+  std::vector<FileStamp> files;
+  bool filesChanged = false;       ///< cooked although cached: a file it had written was changed
   std::vector<Value> outputs;      ///< Cooked/Cached: in declaration order
   const NodeDecl* decl = nullptr;  ///< the node type's declaration (owned by the registry)
 
   bool hasError() const { return state == NodeState::Failed || state == NodeState::UpstreamFailed; }
   bool hasWarnings() const;
+};
+
+struct WrittenFile {
+  std::string node;
+  std::filesystem::path path;
+  bool operator==(const WrittenFile&) const = default;
 };
 
 struct CookResult {
@@ -73,6 +97,9 @@ struct CookResult {
   /// No node failed and nothing was cancelled.
   bool ok() const;
   bool hasWarnings() const;
+  /// The files written by this cook (nodes in state Cooked): report order, then the order
+  /// each node reported them. Cached exporters wrote nothing and are not listed.
+  std::vector<WrittenFile> writtenFiles() const;
 };
 
 /// Notified while cooking, from TBB worker threads, possibly concurrently: implementations
@@ -113,8 +140,9 @@ class Evaluator {
   /// Throws GraphError for an unknown target; everything else is reported per node.
   CookResult cook(const Graph& graph, const CookOptions& options = {});
 
-  /// The requested nodes (default: the whole graph) whose result is not cached, in
-  /// topological order: what the next cook() would compute. Does not change cache recency.
+  /// The requested nodes (default: the whole graph) whose result is not cached (or, for a
+  /// side-effect node, whose files changed on disk), in topological order: what the next
+  /// cook() would compute. Does not change cache recency.
   std::vector<std::string> dirtyNodes(const Graph& graph, const CookOptions& options = {}) const;
 
   ValueCache& cache() { return cache_; }

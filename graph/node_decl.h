@@ -6,6 +6,7 @@
 //   static void declare(graph::NodeDecl& d) {
 //     d.doc("Harmonic propagation of design constraints (paper §5).").category("Design");
 //     d.input<core::TetMesh>("mesh").doc("The volume.");
+//     // an exporter also says d.sideEffect() and reports its files with c.wroteFile(path)
 //     d.input<core::ConstraintSet>("constraints").optional().multiple();
 //     d.output<core::TensorField>("field");
 //     d.param<double>("tolerance").byDefault(1e-8).min(1e-14).max(1e-2).doc("...");
@@ -142,8 +143,16 @@ class NodeDecl {
     category_ = std::move(text);
     return *this;
   }
+  /// The node acts outside the graph: it writes files (an exporter) and reports each with
+  /// CookContext::wroteFile. Within one Evaluator such a node cooks again, although its cache
+  /// key is unchanged, when a file it wrote went missing or changed on disk.
+  NodeDecl& sideEffect(bool on = true) {
+    sideEffect_ = on;
+    return *this;
+  }
   const std::string& doc() const { return doc_; }
   const std::string& category() const { return category_; }
+  bool hasSideEffects() const { return sideEffect_; }
 
   template <class T>
   PortBuilder input(std::string name) {
@@ -196,6 +205,7 @@ class NodeDecl {
   std::string typeName_;
   int typeVersion_;
   std::string doc_, category_;
+  bool sideEffect_ = false;
   std::deque<PortDecl> inputs_, outputs_;
   std::deque<ParamDecl> params_;
   std::map<int, ParamMigration> migrations_;

@@ -6,6 +6,7 @@ std::size_t ValueCache::entryBytes(const CacheEntry& entry) {
   std::size_t bytes = 128;
   for (const Value& v : entry.outputs) bytes += v.byteSize();
   for (const NodeMessage& m : entry.messages) bytes += m.text.size() + 32;
+  for (const FileStamp& f : entry.files) bytes += f.path.native().size() + 32;
   return bytes;
 }
 
@@ -20,6 +21,12 @@ std::shared_ptr<const CacheEntry> ValueCache::find(const Hash& key) {
 bool ValueCache::contains(const Hash& key) const {
   std::lock_guard lock(mutex_);
   return slots_.count(key) != 0;
+}
+
+std::shared_ptr<const CacheEntry> ValueCache::peek(const Hash& key) const {
+  std::lock_guard lock(mutex_);
+  auto it = slots_.find(key);
+  return it == slots_.end() ? nullptr : it->second.entry;
 }
 
 void ValueCache::insert(const Hash& key, CacheEntry entry) {

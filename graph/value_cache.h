@@ -12,6 +12,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "graph/file_stamp.h"
 #include "graph/hash.h"
 #include "graph/node_message.h"
 #include "graph/value.h"
@@ -22,6 +23,7 @@ struct CacheEntry {
   std::vector<Value> outputs;         ///< in declaration order
   std::vector<NodeMessage> messages;  ///< info and warnings of the cook that produced it
   double seconds = 0;                 ///< that cook's duration
+  std::vector<FileStamp> files;       ///< side-effect nodes: the files that cook wrote
   std::size_t bytes = 0;              ///< filled by insert()
 };
 
@@ -33,6 +35,8 @@ class ValueCache {
   std::shared_ptr<const CacheEntry> find(const Hash& key);
   /// Presence test that does not change recency.
   bool contains(const Hash& key) const;
+  /// The entry without changing recency; null when absent.
+  std::shared_ptr<const CacheEntry> peek(const Hash& key) const;
   /// Inserts (or replaces) and evicts least recently used entries beyond the budget.
   void insert(const Hash& key, CacheEntry entry);
   void erase(const Hash& key);

@@ -162,7 +162,7 @@ TEST_F(Evaluation, FailureIsContainedAndReportedDownstream) {
   EXPECT_EQ(r.report("bad")->state, NodeState::Failed);
   ASSERT_EQ(r.report("bad")->messages.size(), 1u);
   EXPECT_EQ(r.report("bad")->messages[0],
-            (NodeMessage{Severity::Error, "scale failed on purpose"}));
+            (NodeMessage{Severity::Error, "scale failed on purpose", MessageKind::CookFailed}));
   EXPECT_EQ(r.report("after")->state, NodeState::UpstreamFailed);
   EXPECT_EQ(r.report("after")->messages.at(0).text, "input 'in' failed upstream in node \"bad\"");
   EXPECT_EQ(r.report("sink1")->state, NodeState::UpstreamFailed);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <thread>
@@ -128,6 +129,26 @@ void cookSink(CookContext& c) {
   cookLog().record(c.nodeName());
   cookLog().sink(c.nodeName(), c.input<Number>("in")->value);
   c.info("wrote " + c.path("path").string());
+}
+
+void declareWriteFile(NodeDecl& d) {
+  d.doc("Writes its input as text (a real exporter stand-in).").sideEffect();
+  d.input<Number>("in");
+  d.param<std::string>("path").byDefault("out.txt").outputFile("*.txt");
+  d.param<int>("copies").byDefault(1).min(1).max(9);
+}
+void cookWriteFile(CookContext& c) {
+  cookLog().record(c.nodeName());
+  const std::filesystem::path path = c.path("path");
+  for (int k = 0; k < c.param<int>("copies"); ++k) {
+    const std::filesystem::path file =
+        k == 0 ? path : std::filesystem::path(path.string() + "." + std::to_string(k));
+    std::ofstream out(file, std::ios::binary);
+    out << c.input<Number>("in")->value << "\n";
+    if (!out.flush()) throw graph::NodeError("cannot write " + file.string());
+    out.close();
+    c.wroteFile(file);
+  }
 }
 
 void declareWait(NodeDecl& d) {
@@ -279,6 +300,7 @@ void registerTestNodes(graph::NodeRegistry& r) {
   r.add("Sum", 1, declareSum, cookSum);
   r.add("Scale", 2, declareScale, cookScale);
   r.add("Sink", 1, declareSink, cookSink);
+  r.add("WriteFile", 1, declareWriteFile, cookWriteFile);
   r.add("Wait", 1, declareWait, cookWait);
   r.add("Rendezvous", 1, declareRendezvous, cookRendezvous);
   r.add("Blob", 1, declareBlob, cookBlob);

@@ -7,6 +7,8 @@
 //   Scale v2   in:Number                     -> out:Number      params factor, fail, warn
 //              (typeVersion 1 named the factor "multiplier": a parameter migration)
 //   Sink       in:Number (no outputs)        records the value;  param path:output file
+//   WriteFile  in:Number (no outputs, side effect) writes the value to `path` and, for
+//              copies > 1, to path.1 ... path.<copies-1>; reports each with wroteFile
 //   Wait       in:Number (optional)          -> out:Number      params seconds, ignore_cancel
 //   Rendezvous                               -> out:Number      waits for a second Rendezvous
 //   Blob       param kilobytes:int           -> out:Blob (sized value for the cache budget)
