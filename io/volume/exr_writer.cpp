@@ -220,6 +220,7 @@ VoxelExportStats writeFieldExrSlices(const std::string& pattern, const core::Ten
   }
   progress.report(1.0, "writing EXR slices");
   stats.filesWritten = slices;
+  stats.files = committed;
   return stats;
 }
 

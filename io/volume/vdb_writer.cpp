@@ -196,6 +196,7 @@ VoxelExportStats writeFieldVdb(const std::filesystem::path& path, const core::Te
     }
   });
   stats.filesWritten = 1;
+  stats.files = {path};
   return stats;
 }
 

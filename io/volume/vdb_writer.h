@@ -20,6 +20,7 @@
 // grids are identical for any thread count. The file is written atomically (io::writeAtomically).
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "core/progress.h"
 #include "core/tensor_field.h"
@@ -43,6 +44,7 @@ struct VoxelExportStats {
   VoxelLattice lattice;          ///< the index box sampled (the mesh's bounds)
   std::size_t activeVoxels = 0;  ///< voxels whose centre is inside the mesh
   int filesWritten = 0;
+  std::vector<std::filesystem::path> files;  ///< the files written, in order (EXR: by slice)
 };
 
 /// Writes the selected grids of `field` to `path`. Throws core::Error for a bad voxel size, a

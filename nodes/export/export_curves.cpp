@@ -12,7 +12,8 @@ void declare(graph::NodeDecl& d) {
        "Writes degenerate curves; the format follows the extension: .json (the "
        "tfd-degenerate-curves exchange format), .vtp (ParaView polylines with type, pattern "
        "and Fig. 5 colour arrays) or .obj (line elements).")
-      .category("Export");
+      .category("Export")
+      .sideEffect();
   d.input<core::DegenerateCurves>("curves");
   d.param<std::string>("path")
       .byDefault("curves.json")
@@ -24,6 +25,7 @@ void cook(graph::CookContext& c) {
   const auto curves = c.input<core::DegenerateCurves>("curves");
   const std::filesystem::path path = c.path("path");
   io::writeCurves(path, *curves);
+  c.wroteFile(path);
   c.info("wrote " + std::to_string(curves->size()) + " curves to " + path.string());
 }
 

@@ -14,7 +14,8 @@ void declare(graph::NodeDecl& d) {
        "Writes the field as a sequence of OpenEXR images, one per z-slice of a voxel grid "
        "(bottom to top), 32-bit float channels named `T.xx` ... plus a mask `A`; header "
        "attributes `tfd.*` give the voxel size, slice position and pixel placement.")
-      .category("Export");
+      .category("Export")
+      .sideEffect();
   d.input<core::TensorField>("field");
   d.param<std::string>("path")
       .byDefault("slices/field.%04d.exr")
@@ -32,6 +33,7 @@ void cook(graph::CookContext& c) {
   const std::filesystem::path pattern = c.path("path");
   const io::VoxelExportStats stats =
       io::writeFieldExrSlices(pattern.string(), *field, o, progressOf(c));
+  for (const std::filesystem::path& file : stats.files) c.wroteFile(file);
   c.info(voxelInfo(std::to_string(stats.filesWritten) + " slices " + pattern.string(), stats));
 }
 

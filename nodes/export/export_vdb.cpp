@@ -14,7 +14,8 @@ void declare(graph::NodeDecl& d) {
        "Writes the field to an OpenVDB file: float grids `T.xx T.yy T.zz T.xy T.yz T.xz`, "
        "optionally Vec3 grids `T.eigval` and `T.e1 T.e2 T.e3`; voxels whose centre lies inside "
        "the mesh are active, the rest inactive with value 0.")
-      .category("Export");
+      .category("Export")
+      .sideEffect();
   d.input<core::TensorField>("field");
   d.param<std::string>("path").byDefault("field.vdb").outputFile("*.vdb").doc("Output file.");
   declareVoxelParams(d, "quantities");
@@ -27,7 +28,9 @@ void cook(graph::CookContext& c) {
   o.quantities = quantitiesOf(c, "quantities");
   o.source = "node " + c.nodeName();
   const std::filesystem::path path = c.path("path");
-  c.info(voxelInfo(path.string(), io::writeFieldVdb(path, *field, o, progressOf(c))));
+  const io::VoxelExportStats stats = io::writeFieldVdb(path, *field, o, progressOf(c));
+  for (const std::filesystem::path& file : stats.files) c.wroteFile(file);
+  c.info(voxelInfo(path.string(), stats));
 }
 
 }  // namespace

@@ -17,7 +17,8 @@ void declare(graph::NodeDecl& d) {
        "degenerate curve passes through gets the cell arrays `curve_id` (-1 elsewhere) and "
        "`curve_colour` (the paper's Fig. 5 colours: L-wedge green, L-trisector blue, P-wedge "
        "yellow, P-trisector red, transition white); threshold on curve_id >= 0 to see them.")
-      .category("Export");
+      .category("Export")
+      .sideEffect();
   d.input<core::TensorField>("field");
   d.input<core::DegenerateCurves>("curves").optional().doc(
       "Degenerate curves of this field (ExtractDegenerateCurves) to colour the tets.");
@@ -79,6 +80,7 @@ void cook(graph::CookContext& c) {
   }
   const std::filesystem::path path = c.path("path");
   io::writeFieldVtu(path, *field, o, progressOf(c));
+  c.wroteFile(path);
   c.info("wrote " + path.string());
 }
 

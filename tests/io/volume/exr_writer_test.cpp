@@ -98,6 +98,9 @@ TEST(ExrWriter, BoxSlicesHoldChannelsGeometryAndAnalyticValues) {
   std::sort(files.begin(), files.end());
   EXPECT_EQ(files, (std::vector<std::string>{"slice.0000.exr", "slice.0001.exr", "slice.0002.exr",
                                              "slice.0003.exr"}));
+  std::vector<fs::path> expectedFiles;  // the stats list the slices bottom to top
+  for (const std::string& name : files) expectedFiles.push_back(dir.path() / "sub" / name);
+  EXPECT_EQ(stats.files, expectedFiles);
 
   std::vector<std::string> expectedChannels = {
       "A",      "T.e1.x", "T.e1.y", "T.e1.z",     "T.e2.x",     "T.e2.y",     "T.e2.z",

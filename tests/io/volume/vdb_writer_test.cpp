@@ -118,6 +118,7 @@ TEST(VdbWriter, BoxFieldGridsHaveNamesMetadataTransformAndAnalyticValues) {
   EXPECT_EQ(stats.lattice.dims(), (std::array<int, 3>{9, 17, 7}));
   EXPECT_EQ(stats.activeVoxels, 9u * 17u * 7u);
   EXPECT_EQ(stats.filesWritten, 1);
+  EXPECT_EQ(stats.files, std::vector<fs::path>{path});
 
   const io::VdbFileData f = io::readVdbFile(path);
   EXPECT_EQ(f.fileMetadata.at("generator"), "tfd");
