@@ -1,5 +1,5 @@
 // tfd cook GRAPH [--set NODE.PARAM=VALUE]... [--node NAME]... [--out DIR] [--threads N]
-//          [--profile] [--strict] [--quiet]
+//          [--profile] [--files] [--strict] [--quiet]
 #include <tbb/global_control.h>
 
 #include <unistd.h>
@@ -34,7 +34,7 @@ struct CookArgs {
   std::vector<std::string> targets;
   std::string out;
   int threads = 0;
-  bool profile = false, strict = false, quiet = false;
+  bool profile = false, files = false, strict = false, quiet = false;
 };
 
 int runCook(const CookArgs& args, const Context& context) {
@@ -86,7 +86,8 @@ int runCook(const CookArgs& args, const Context& context) {
   }
   std::signal(SIGINT, previous);
   reporter.finish();
-  return printCookReport(result, {args.quiet, args.strict, args.profile}, std::cout, std::cerr);
+  return printCookReport(result, {args.quiet, args.strict, args.profile, args.files}, std::cout,
+                         std::cerr);
 }
 
 }  // namespace
@@ -114,8 +115,11 @@ void addCookCommand(CLI::App& app, const Context& context, int& exitCode) {
       ->check(CLI::Range(1, 4096));
   cmd->add_flag("--profile", args->profile,
                 "After cooking, print 'profile <node> <type> <seconds>' per cooked node.");
+  cmd->add_flag("--files", args->files,
+                "After cooking, print 'file <node> <path>' per file the cook wrote.");
   cmd->add_flag("--strict", args->strict, "Treat warnings as errors (exit 1).");
-  cmd->add_flag("-q,--quiet", args->quiet, "Print nothing but errors (and --profile lines).");
+  cmd->add_flag("-q,--quiet", args->quiet,
+                "Print nothing but errors (and --profile, --files lines).");
   cmd->callback([args, &context, &exitCode] { exitCode = runCook(*args, context); });
 }
 

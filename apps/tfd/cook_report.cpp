@@ -38,6 +38,9 @@ int printCookReport(const graph::CookResult& result, const ReportOptions& option
         std::snprintf(seconds, sizeof seconds, "%.6f", r.seconds);
         out << "profile " << r.node << " " << r.type << " " << seconds << "\n";
       }
+  if (options.files)
+    for (const graph::WrittenFile& f : result.writtenFiles())
+      out << "file " << f.node << " " << f.path.string() << "\n";
   if (result.cancelled) {
     err << "tfd: cancelled\n";
     return kNodeFailed;

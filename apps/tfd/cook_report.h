@@ -6,6 +6,8 @@
 //   stdout  info: node "extract1": 3 curves (2 linear, 1 planar)  (not with --quiet)
 //           profile <node-name> <type> <seconds>                  (with --profile; nodes that
 //           cooked)
+//           file <node-name> <path>                               (with --files; every file
+//           this cook wrote, from CookResult::writtenFiles, in graph order)
 // Exit 1 when a node failed, the cook was cancelled, or --strict and there were warnings.
 #include <iosfwd>
 
@@ -17,6 +19,7 @@ struct ReportOptions {
   bool quiet = false;
   bool strict = false;
   bool profile = false;
+  bool files = false;
 };
 
 int printCookReport(const graph::CookResult& result, const ReportOptions& options,
