@@ -4,6 +4,7 @@
 #include "tests/support/temp_dir.h"
 
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 #include <tbb/global_control.h>
 #include <unistd.h>
 
@@ -284,6 +285,11 @@ TEST(ExrWriter, ReExportWithFewerSlicesRemovesTheOldExtraSlicesOfItsPattern) {
   // Files that only look alike stay: other names, other padding, other patterns.
   for (const char* other : {"f.5.exr", "f.0001.exr", "g.001.exr", "f.001.exr.txt"})
     std::ofstream(dir.path() / other) << "not ours";
+  // A staged slice of a killed export (its process is gone) is removed too.
+  const pid_t dead = ::fork();
+  if (dead == 0) ::_exit(0);
+  ::waitpid(dead, nullptr, 0);
+  std::ofstream(dir.path() / (".f.007.tfd-tmp" + std::to_string(dead) + "-4.exr")) << "partial";
   options.voxelSize = 0.25;
   const int coarse = io::writeFieldExrSlices(pattern, field, options).filesWritten;
   ASSERT_LT(coarse, fine);
