@@ -170,7 +170,14 @@ Graph graphFromJson(const Json& input, const NodeRegistry& registry, const std::
 }
 
 Graph parseGraph(std::string_view text, const NodeRegistry& registry, const std::string& source) {
-  return graphFromJson(parseJsonText(text, source), registry, source);
+  const Json json = parseJsonText(text, source);
+  try {
+    return graphFromJson(json, registry, source);
+  } catch (const GraphError&) {
+    throw;
+  } catch (const std::exception& e) {  // a library exception is a load error too, never abort
+    throw LoadError(source, "", printableText(e.what()));
+  }
 }
 
 std::string readTextFile(const std::filesystem::path& path) {

@@ -1,5 +1,7 @@
 #include "graph/json_text.h"
 
+#include <algorithm>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <vector>
@@ -112,6 +114,64 @@ void prettyInto(const Json& j, std::string& out, std::size_t indent, std::size_t
   out += j.is_object() ? "}" : "]";
 }
 
+/// A char iterator that records how far the parser has read (the largest offset reached).
+struct CountingIterator {
+  using iterator_category = std::forward_iterator_tag;
+  using value_type = char;
+  using difference_type = std::ptrdiff_t;
+  using pointer = const char*;
+  using reference = const char&;
+
+  const char* p = nullptr;
+  std::size_t* consumed = nullptr;  ///< shared by the begin iterator and its copies
+  const char* base = nullptr;
+
+  CountingIterator() = default;
+  CountingIterator(const char* position, std::size_t* counter)
+      : p(position), consumed(counter), base(position) {}
+  reference operator*() const { return *p; }
+  CountingIterator& operator++() {
+    ++p;
+    if (consumed) *consumed = std::max(*consumed, static_cast<std::size_t>(p - base));
+    return *this;
+  }
+  CountingIterator operator++(int) {
+    CountingIterator old = *this;
+    ++*this;
+    return old;
+  }
+  bool operator==(const CountingIterator& o) const { return p == o.p; }
+  bool operator!=(const CountingIterator& o) const { return p != o.p; }
+};
+
+std::string withoutPrefix(std::string message) {
+  if (auto pos = message.find("] "); message.starts_with("[json.exception") && pos != message.npos)
+    message = message.substr(pos + 2);
+  return message;
+}
+
+/// "line L, column C" of the byte before offset `end` (the last one read).
+std::string lineAndColumn(std::string_view text, std::size_t end) {
+  end = std::min(end, text.size());
+  std::size_t line = 1, column = 1;
+  for (std::size_t i = 0; i + 1 < end; ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      column = 1;
+    } else {
+      ++column;
+    }
+  }
+  return "line " + std::to_string(line) + ", column " + std::to_string(column);
+}
+
+/// The pointer of the value being read when parsing failed: the last key of an object, or
+/// the next element of an array (its index is only counted once the value is complete).
+std::string failurePointer(std::vector<Frame> frames) {
+  if (!frames.empty() && !frames.back().object) ++frames.back().index;
+  return framesPointer(frames);
+}
+
 }  // namespace
 
 std::string pointerJoin(std::string_view pointer, std::string_view token) {
@@ -167,15 +227,54 @@ Json parseJsonText(std::string_view text, const std::string& source) {
     }
     return true;
   };
+  // The reader's position, for errors nlohmann reports without one (a number beyond the
+  // double range, 1e400, is an out_of_range error at the end of the token).
+  std::size_t consumed = 0;
   try {
-    return Json::parse(text.begin(), text.end(), callback);
+    return Json::parse(CountingIterator{text.data(), &consumed},
+                       CountingIterator{text.data() + text.size(), nullptr}, callback);
   } catch (const nlohmann::json::parse_error& e) {
-    std::string message = e.what();
-    if (auto pos = message.find("] ");
-        message.starts_with("[json.exception") && pos != message.npos)
-      message = message.substr(pos + 2);
-    throw LoadError(source, "", "invalid JSON: " + message);
+    throw LoadError(source, "", "invalid JSON: " + printableText(withoutPrefix(e.what())));
+  } catch (const nlohmann::json::out_of_range& e) {
+    std::string message = withoutPrefix(e.what());
+    if (e.id == 406) {  // "number overflow parsing '1e400'"
+      const std::size_t quote = message.find('\'');
+      const std::string token = quote == std::string::npos ? std::string() : message.substr(quote);
+      message = "the number " + printableText(token) +
+                " is beyond the range of a double (about ±1.8e308)";
+    }
+    throw LoadError(source, failurePointer(frames),
+                    message + " at " + lineAndColumn(text, consumed));
+  } catch (const nlohmann::json::exception& e) {
+    throw LoadError(source, failurePointer(frames),
+                    "invalid JSON: " + printableText(withoutPrefix(e.what())) + " at " +
+                        lineAndColumn(text, consumed));
   }
+}
+
+std::string printableText(std::string_view text) {
+  static const char* hex = "0123456789abcdef";
+  std::string out;
+  for (std::size_t i = 0; i < text.size();) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    // Length of a well-formed UTF-8 sequence starting here (0: not one).
+    std::size_t n = c < 0x80 ? 1 : (c >> 5) == 6 ? 2 : (c >> 4) == 14 ? 3 : (c >> 3) == 30 ? 4 : 0;
+    if (n > 1 && (c == 0xc0 || c == 0xc1 || c > 0xf4)) n = 0;  // overlong or beyond U+10FFFF
+    for (std::size_t k = 1; k < n; ++k)
+      if (i + k >= text.size() || (static_cast<unsigned char>(text[i + k]) >> 6) != 2) n = 0;
+    if (n == 1 && c >= 0x20 && c != 0x7f) {
+      out += text[i];
+    } else if (n > 1) {
+      out.append(text.substr(i, n));
+    } else {
+      out += "\\x";
+      out += hex[c >> 4];
+      out += hex[c & 15];
+      n = 1;
+    }
+    i += n;
+  }
+  return out;
 }
 
 std::string formatJson(const Json& json) {

@@ -26,6 +26,10 @@ std::string compactJson(const Json& json);
 /// such as "an object" / "an array of 5 elements" when long.
 std::string describeJson(const Json& json);
 
+/// `text` for a message: valid UTF-8 is kept, control characters and bytes that are not
+/// UTF-8 become \xNN, so binary input is never echoed raw to a terminal.
+std::string printableText(std::string_view text);
+
 /// Appends one escaped token to a JSON pointer: pointerJoin("/nodes", "a/b") == "/nodes/a~1b".
 std::string pointerJoin(std::string_view pointer, std::string_view token);
 std::string pointerJoin(std::string_view pointer, std::size_t index);

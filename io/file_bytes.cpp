@@ -26,15 +26,7 @@ std::string readFileBytes(const std::filesystem::path& path) {
 }
 
 void writeFileBytes(const std::filesystem::path& path, const std::string& bytes) {
-  writeAtomically(path, [&](const std::filesystem::path& temp) {
-    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-    if (!out) {
-      throw core::Error("cannot write file '" + path.string() + "': " + std::strerror(errno));
-    }
-    out.write(bytes.data(), std::streamsize(bytes.size()));
-    out.close();
-    if (!out) throw core::Error("cannot write file '" + path.string() + "' (disk full?)");
-  });
+  writeAtomically(path, [&](OutputFile& out) { out.write(bytes.data(), bytes.size()); });
 }
 
 }  // namespace tfd::io

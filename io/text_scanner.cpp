@@ -100,10 +100,35 @@ bool parseInteger(std::string_view token, long long& value) {
   return ec == std::errc() && end == token.data() + token.size();
 }
 
+std::string printableText(std::string_view text) {
+  static const char* hex = "0123456789abcdef";
+  std::string out;
+  for (std::size_t i = 0; i < text.size();) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    // Length of a well-formed UTF-8 sequence starting here (0: not one).
+    std::size_t n = c < 0x80 ? 1 : (c >> 5) == 6 ? 2 : (c >> 4) == 14 ? 3 : (c >> 3) == 30 ? 4 : 0;
+    if (n > 1 && (c == 0xc0 || c == 0xc1 || c > 0xf4)) n = 0;  // overlong or beyond U+10FFFF
+    for (std::size_t k = 1; k < n; ++k)
+      if (i + k >= text.size() || (static_cast<unsigned char>(text[i + k]) >> 6) != 2) n = 0;
+    if (n == 1 && c >= 0x20 && c != 0x7f) {
+      out += text[i];
+    } else if (n > 1) {
+      out.append(text.substr(i, n));
+    } else {
+      out += "\\x";
+      out += hex[c >> 4];
+      out += hex[c & 15];
+      n = 1;
+    }
+    i += n;
+  }
+  return out;
+}
+
 std::string describeToken(std::string_view token) {
   if (token.empty()) return "the end of the line";
-  if (token.size() > 40) return "'" + std::string(token.substr(0, 40)) + "...'";
-  return "'" + std::string(token) + "'";
+  if (token.size() > 40) return "'" + printableText(token.substr(0, 40)) + "...'";
+  return "'" + printableText(token) + "'";
 }
 
 }  // namespace tfd::io

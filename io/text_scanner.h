@@ -55,7 +55,12 @@ bool parseNumber(std::string_view token, double& value);
 /// Parses a whole token as a decimal integer (a leading '+' is allowed); false otherwise.
 bool parseInteger(std::string_view token, long long& value);
 
-/// "'abc'" for a token, "the end of the line" for an empty one: for "found ..." messages.
+/// `text` for a message: valid UTF-8 is kept, control characters and bytes that are not
+/// UTF-8 become \xNN, so binary input is never echoed raw to a terminal.
+std::string printableText(std::string_view text);
+
+/// "'abc'" for a token, "the end of the line" for an empty one: for "found ..." messages
+/// (printableText).
 std::string describeToken(std::string_view token);
 
 }  // namespace tfd::io

@@ -14,6 +14,8 @@ std::optional<graph::Graph> loadGraphOrReport(const std::filesystem::path& path,
     return graph::loadGraphFile(path, registry);
   } catch (const graph::GraphError& e) {
     printError(e.what());
+  } catch (const std::exception& e) {  // any library exception is still a load error
+    printError(path.string() + ": " + e.what());
   }
   return std::nullopt;
 }

@@ -2,15 +2,13 @@
 //          [--profile] [--files] [--strict] [--quiet]
 #include <tbb/global_control.h>
 
-#include <unistd.h>
-#include <atomic>
-#include <csignal>
 #include <iostream>
 #include <memory>
 
 #include "apps/tfd/cli.h"
 #include "apps/tfd/console_reporter.h"
 #include "apps/tfd/cook_report.h"
+#include "apps/tfd/stop_signals.h"
 #include "graph/errors.h"
 #include "graph/evaluator.h"
 #include "graph/overrides.h"
@@ -18,15 +16,6 @@
 namespace tfd::cli {
 
 namespace {
-
-std::atomic<bool> gCancel{false};
-static_assert(std::atomic<bool>::is_always_lock_free, "used from a signal handler");
-
-extern "C" void onInterrupt(int) {
-  if (gCancel.exchange(true)) _exit(130);  // a second Ctrl-C stops at once
-  const char message[] = "\ntfd: cancelling (press Ctrl-C again to stop at once)\n";
-  [[maybe_unused]] auto n = write(STDERR_FILENO, message, sizeof message - 1);
-}
 
 struct CookArgs {
   std::string graph;
@@ -70,24 +59,24 @@ int runCook(const CookArgs& args, const Context& context) {
   graph::CookOptions options;
   options.targets = args.targets;
   options.outDir = args.out;
-  options.cancel = &gCancel;
   options.observer = &reporter;
-  gCancel = false;
-  auto previous = std::signal(SIGINT, onInterrupt);
   graph::CookResult result;
+  int stopSignal = 0;
   try {
+    StopSignals signals;  // SIGINT, SIGTERM, SIGHUP cancel the cook
+    options.cancel = &StopSignals::cancelFlag();
     graph::Evaluator evaluator;
     result = evaluator.cook(*graph, options);
+    stopSignal = StopSignals::received();
   } catch (const std::exception& e) {
-    std::signal(SIGINT, previous);
     reporter.finish();
     printError(e.what());
     return kUsage;
   }
-  std::signal(SIGINT, previous);
   reporter.finish();
-  return printCookReport(result, {args.quiet, args.strict, args.profile, args.files}, std::cout,
-                         std::cerr);
+  const int code = printCookReport(result, {args.quiet, args.strict, args.profile, args.files},
+                                   std::cout, std::cerr);
+  return stopSignal != 0 ? 128 + stopSignal : code;
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 // tfd — the tensor field designer's command line. Thin: builds the node registry, wires the
 // subcommands (one file each) to CLI11 and maps usage errors to exit code 2.
+#include <csignal>
 #include <iostream>
 
 #include "apps/tfd/cli.h"
@@ -8,6 +9,9 @@
 
 int main(int argc, char** argv) {
   using namespace tfd;
+  // A file-size limit (ulimit -f) must fail the write that hits it (EFBIG), which the writers
+  // report naming the file, instead of killing the process and leaving a temporary behind.
+  std::signal(SIGXFSZ, SIG_IGN);
   graph::NodeRegistry registry;
   try {
     nodes::registerAll(registry);

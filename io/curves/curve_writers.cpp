@@ -19,12 +19,7 @@ using core::DegenerateCurves;
 using core::PointPattern;
 
 void writeText(const std::filesystem::path& path, const std::string& text) {
-  writeAtomically(path, [&](const std::filesystem::path& temp) {
-    std::ofstream out(temp, std::ios::binary);
-    out.write(text.data(), std::streamsize(text.size()));
-    out.close();
-    if (!out) throw core::Error("cannot write file '" + path.string() + "'");
-  });
+  writeAtomically(path, [&](OutputFile& out) { out.write(text.data(), text.size()); });
 }
 
 /// Shortest decimal that reads back to the same double.
@@ -123,7 +118,7 @@ void writeCurvesVtp(const std::filesystem::path& path, const DegenerateCurves& c
   xml.end();
   xml.end();  // Piece
   xml.end();  // PolyData
-  writeAtomically(path, [&](const std::filesystem::path& temp) { xml.save(temp); });
+  writeAtomically(path, [&](OutputFile& out) { xml.save(out); });
 }
 
 void writeCurvesObj(const std::filesystem::path& path, const DegenerateCurves& curves) {

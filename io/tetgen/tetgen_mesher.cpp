@@ -8,14 +8,15 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
-#include <mutex>
 #include <numeric>
 #include <sstream>
 #include <vector>
 
 #include "core/error.h"
+#include "core/memory_budget.h"
 #include "core/surface/surface_check.h"
 #include "io/tet_mesh_build.h"
+#include "io/tetgen/tetgen_process.h"
 
 namespace tfd::io {
 namespace detail {
@@ -65,64 +66,15 @@ void checkCoincidentVertices(const core::SurfaceMesh& s, const std::string& sour
   }
 }
 
-/// Redirects the process' stdout into a temporary file while alive: TetGen prints diagnostics
-/// with printf even with `Q`. The text is kept for error messages.
-class StdoutCapture {
- public:
-  StdoutCapture() {
-    std::fflush(stdout);
-    file_ = std::tmpfile();
-    saved_ = file_ ? ::dup(STDOUT_FILENO) : -1;
-    if (saved_ >= 0) ::dup2(::fileno(file_), STDOUT_FILENO);
-  }
-  ~StdoutCapture() {
-    restore();
-    if (file_) std::fclose(file_);
-  }
-  StdoutCapture(const StdoutCapture&) = delete;
-  StdoutCapture& operator=(const StdoutCapture&) = delete;
+}  // namespace
 
-  /// Restores stdout and returns what was printed (at most a few lines, trimmed).
-  std::string finish() {
-    restore();
-    std::string text;
-    if (!file_) return text;
-    std::rewind(file_);
-    char buffer[4096];
-    const std::size_t n = std::fread(buffer, 1, sizeof buffer, file_);
-    text.assign(buffer, n);
-    while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
-    std::string flat;  // one line, runs of white space collapsed
-    for (char c : text) {
-      if (std::isspace(static_cast<unsigned char>(c))) {
-        if (!flat.empty() && flat.back() != ' ') flat += ' ';
-      } else {
-        flat += c;
-      }
-    }
-    text = flat;
-    if (text.size() > 300) text = text.substr(0, 300) + "...";
-    return text;
-  }
-
- private:
-  void restore() {
-    if (saved_ < 0) return;
-    std::fflush(stdout);
-    ::dup2(saved_, STDOUT_FILENO);
-    ::close(saved_);
-    saved_ = -1;
-  }
-  std::FILE* file_ = nullptr;
-  int saved_ = -1;
-};
-
-std::mutex& tetgenMutex() {
-  static std::mutex m;
-  return m;
+double defaultTetgenTimeLimit(double targetTets) {
+  return 30.0 + 40e-6 * std::max(0.0, targetTets);
 }
 
-}  // namespace
+double tetgenMemoryEstimate(double tets, std::size_t surfaceVertices) {
+  return kTetgenBaseBytes + kTetgenBytesPerTet * tets + 200.0 * double(surfaceVertices);
+}
 
 std::string tetgenSwitches(double surfaceVolume, const TetgenOptions& o) {
   std::ostringstream s;
@@ -186,36 +138,41 @@ std::shared_ptr<const core::TetMesh> tetrahedralize(const core::SurfaceMesh& inp
     for (int i = 0; i < 3; ++i) f.polygonlist[0].vertexlist[i] = surface.triangles[t][i];
   }
 
+  const double expected = options.targetTets > 0 ? options.targetTets : 1000.0 * in.numberofpoints;
+  core::checkMemory(
+      tetgenMemoryEstimate(expected, surface.positions.size()),
+      source + ": TetGen for about " + std::to_string(std::llround(expected)) + " tets");
+  TetgenRunLimits limits;
+  limits.seconds =
+      options.timeLimit > 0 ? options.timeLimit : defaultTetgenTimeLimit(options.targetTets);
+  limits.timeLimitName = options.timeLimit > 0 ? "the time limit" : "the automatic time limit";
+  limits.memoryBytes = core::memoryBudget();
+  limits.source = source;
+
   progress.report(0.05, "TetGen");
-  {
-    std::lock_guard lock(tetgenMutex());
-    // Keeps the terminatetetgen work-around linked in (see tetgen_terminate.cpp).
-    [[maybe_unused]] volatile int linked = detail::kTetgenTerminateInterposed;
-    StdoutCapture capture;
-    try {
-      ::tetrahedralize(switches.data(), &in, &out);
-    } catch (int code) {
-      const std::string said = capture.finish();
-      throw core::Error(source + ": " + tetgenFailure(code) +
-                        (said.empty() ? "" : " [TetGen: " + said + "]"));
-    }
+  // Keeps the terminatetetgen work-around linked in (see tetgen_terminate.cpp).
+  [[maybe_unused]] volatile int linked = detail::kTetgenTerminateInterposed;
+  TetgenRun run = runTetgenInChild(switches, in, limits, progress);
+  if (run.failureCode != 0) {
+    throw core::Error(source + ": " + tetgenFailure(run.failureCode) +
+                      (run.said.empty() ? "" : " [TetGen: " + run.said + "]"));
   }
   progress.throwIfCancelled();
   progress.report(0.8, "building the tet mesh topology");
 
-  if (out.numberoftetrahedra <= 0 || out.tetrahedronlist == nullptr) {
+  if (run.tets.empty()) {
     throw core::Error(source + ": TetGen produced no tetrahedra (switches " + switches + ")");
   }
-  std::vector<core::Vec3> positions(out.numberofpoints);
-  for (int v = 0; v < out.numberofpoints; ++v) {
-    positions[v] =
-        core::Vec3(out.pointlist[3 * v], out.pointlist[3 * v + 1], out.pointlist[3 * v + 2]);
+  std::vector<core::Vec3> positions(run.points.size() / 3);
+  for (std::size_t v = 0; v < positions.size(); ++v) {
+    positions[v] = core::Vec3(run.points[3 * v], run.points[3 * v + 1], run.points[3 * v + 2]);
   }
-  std::vector<core::TetMesh::Tet> tets(out.numberoftetrahedra);
-  const int corners = out.numberofcorners;
-  for (int t = 0; t < out.numberoftetrahedra; ++t) {
-    for (int i = 0; i < 4; ++i) tets[t][i] = out.tetrahedronlist[corners * t + i] - out.firstnumber;
+  run.points = {};
+  std::vector<core::TetMesh::Tet> tets(run.tets.size() / 4);
+  for (std::size_t t = 0; t < tets.size(); ++t) {
+    for (int i = 0; i < 4; ++i) tets[t][i] = run.tets[4 * t + i];
   }
+  run.tets = {};
   auto mesh = buildTetMesh(std::move(positions), std::move(tets), "TetGen output");
   progress.report(1.0);
   return mesh;

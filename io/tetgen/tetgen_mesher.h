@@ -1,6 +1,7 @@
 #pragma once
 // TetGen adapter: a closed triangle surface to a quality tetrahedral mesh (paper section 4
 // works on such meshes; the paper used TetGen too).
+#include <cstddef>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -29,9 +30,23 @@ struct TetgenOptions {
   /// Calibration of the volume bound: TetGen's mean tet volume ends up well below the bound,
   /// 1.8 lands the count on the target (see bench/RESULTS.md).
   double volumeFactor = 1.8;
+  /// Wall-clock limit in seconds for TetGen itself; 0: defaultTetgenTimeLimit(targetTets).
+  double timeLimit = 0;
   /// Names the surface in error messages, e.g. "file 'part.stl'"; empty: "the surface".
   std::string source = {};
 };
+
+/// The automatic time limit: 30 s plus 40 s per million target tets (TetGen makes about a
+/// million tets in 7 s on one core of the 2-core machine of bench/RESULTS.md, so this leaves
+/// room for a busy machine; a refinement that never ends is stopped).
+double defaultTetgenTimeLimit(double targetTets);
+
+/// Peak memory of meshing `tets` tets: TetGen in its child process (measured about 190 bytes
+/// per tet), then the TetMesh built from its output in this process (about 320 bytes per
+/// tet, measured at 1M and 3M tets, see bench/RESULTS.md), with some margin.
+inline constexpr double kTetgenBaseBytes = 48.0 * 1024 * 1024;
+inline constexpr double kTetgenBytesPerTet = 400;
+double tetgenMemoryEstimate(double tets, std::size_t surfaceVertices);
 
 /// The TetGen switch string used for `surface` (its volume) and `options`; always PLC mode
 /// (`p`), zero-based numbering (`z`) and quiet (`Q`), e.g. "pzQYq1.414a0.000012".
@@ -45,8 +60,11 @@ std::string tetgenSwitches(double surfaceVolume, const TetgenOptions& options);
 /// self-intersecting surface, 4 very small input feature, 5 two very close facets, 10 input error).
 /// The result has positively oriented tets and keeps every surface vertex (with
 /// keepBoundary, the boundary faces are exactly the input triangles). Deterministic: the same
-/// input and options give the identical mesh. TetGen calls are serialised (its predicates use
-/// global state); it cannot be cancelled while it runs, `progress` is checked before and after.
+/// input and options give the identical mesh. TetGen runs in a child process
+/// (tetgen_process.h): a cancelled `progress` stops it within about 50 ms (core::Cancelled);
+/// beyond options.timeLimit, or beyond the memory budget (core/memory_budget.h), it is stopped
+/// with a core::Error. A request whose estimated memory (tetgenMemoryEstimate) exceeds the
+/// budget is refused before TetGen starts.
 std::shared_ptr<const core::TetMesh> tetrahedralize(const core::SurfaceMesh& surface,
                                                     const TetgenOptions& options,
                                                     const core::Progress& progress = {});

@@ -4,82 +4,67 @@
 #include <OpenEXR/ImfDoubleAttribute.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfIO.h>
 #include <OpenEXR/ImfIntAttribute.h>
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStringAttribute.h>
 #include <OpenEXR/ImfVecAttribute.h>
 #include <tbb/parallel_for.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
-#include <cctype>
-#include <cstdio>
 #include <exception>
+#include <memory>
+#include <set>
 #include <system_error>
 #include <vector>
 
 #include "core/error.h"
 #include "io/atomic_file.h"
+#include "io/temporary_files.h"
+#include "io/volume/frame_pattern.h"
 
 namespace tfd::io {
 
 namespace {
 
-/// Where the frame placeholder sits in a pattern and how wide it is.
-struct Placeholder {
-  std::size_t begin = 0, end = 0;  ///< [begin, end) in the pattern
-  int width = 0;                   ///< zero-padding width (0: none)
+Imath::V3d v3d(const core::Vec3& v) { return Imath::V3d(v.x(), v.y(), v.z()); }
+
+/// Imf::OStream onto an io::OutputFile. OpenEXR writes its line offset table from
+/// ~OutputFile and swallows errors there; OutputFile remembers them and StagedFile::write's
+/// check reports them, so a slice cut short by a full disk is never renamed into place.
+class ExrOutput : public Imf::OStream {
+ public:
+  explicit ExrOutput(OutputFile& out) : Imf::OStream(out.target().c_str()), out_(out) {}
+  void write(const char c[], int n) override {
+    if (!out_.write(c, static_cast<std::size_t>(n)))
+      throw core::Error("cannot write '" + out_.target().string() + "'");
+  }
+  uint64_t tellp() override { return out_.tell(); }
+  void seekp(uint64_t pos) override {
+    if (!out_.seek(pos)) throw core::Error("cannot write '" + out_.target().string() + "'");
+  }
+
+ private:
+  OutputFile& out_;
 };
 
-/// Finds the single placeholder; `%%` is a literal percent sign. Throws core::Error otherwise.
-Placeholder findPlaceholder(const std::string& pattern) {
-  std::vector<Placeholder> found;
-  for (std::size_t i = 0; i < pattern.size();) {
-    if (pattern[i] == '%') {
-      if (i + 1 < pattern.size() && pattern[i + 1] == '%') {
-        i += 2;
-        continue;
-      }
-      std::size_t j = i + 1;
-      int width = 0;
-      while (j < pattern.size() && std::isdigit(static_cast<unsigned char>(pattern[j]))) {
-        width = std::min(width * 10 + (pattern[j] - '0'), 64);
-        ++j;
-      }
-      if (j >= pattern.size() || pattern[j] != 'd') {
-        throw core::Error("EXR path pattern '" + pattern +
-                          "': only %d, %0Nd or a run of # may stand for the slice number "
-                          "(write %% for a percent sign)");
-      }
-      found.push_back({i, j + 1, width});
-      i = j + 1;
-    } else if (pattern[i] == '#') {
-      std::size_t j = i;
-      while (j < pattern.size() && pattern[j] == '#') ++j;
-      found.push_back({i, j, static_cast<int>(std::min<std::size_t>(j - i, 64))});
-      i = j;
-    } else {
-      ++i;
-    }
+/// An exporter owns its files: after a cook, the slices of `pattern` in `folder` that this
+/// cook did not write (left by an earlier, longer export) are removed, so the folder holds one
+/// consistent sequence.
+void removeOtherSlices(const std::string& pattern, const std::filesystem::path& folder,
+                       const std::vector<std::filesystem::path>& written) {
+  namespace fs = std::filesystem;
+  std::set<std::string> keep;
+  for (const auto& p : written) keep.insert(p.filename().string());
+  std::error_code ec;
+  fs::directory_iterator it(folder.empty() ? fs::path(".") : folder, ec), end;
+  for (; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    std::error_code fileError;
+    if (!keep.count(name) && frameOfFileName(pattern, name) && it->is_regular_file(fileError))
+      fs::remove(it->path(), fileError);
   }
-  if (found.size() != 1) {
-    throw core::Error("EXR path pattern '" + pattern + "' must hold exactly one slice number " +
-                      "placeholder (like %04d or ####), found " + std::to_string(found.size()));
-  }
-  return found.front();
 }
-
-std::string unescapePercent(const std::string& s) {
-  std::string out;
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    out += s[i];
-    if (s[i] == '%' && i + 1 < s.size() && s[i + 1] == '%') ++i;
-  }
-  return out;
-}
-
-Imath::V3d v3d(const core::Vec3& v) { return Imath::V3d(v.x(), v.y(), v.z()); }
 
 /// Removes files, ignoring errors (cleanup after a failure).
 void removeAll(const std::vector<std::filesystem::path>& paths) {
@@ -89,19 +74,11 @@ void removeAll(const std::vector<std::filesystem::path>& paths) {
 
 }  // namespace
 
-std::string expandFramePattern(const std::string& pattern, int frame) {
-  const Placeholder ph = findPlaceholder(pattern);
-  char digits[96];
-  std::snprintf(digits, sizeof digits, "%0*d", ph.width, frame);
-  return unescapePercent(pattern.substr(0, ph.begin)) + digits +
-         unescapePercent(pattern.substr(ph.end));
-}
-
 VoxelExportStats writeFieldExrSlices(const std::string& pattern, const core::TensorField& field,
                                      const ExrExportOptions& options,
                                      const core::Progress& progress) {
   namespace fs = std::filesystem;
-  findPlaceholder(pattern);  // a bad pattern fails before any work
+  const bool ownsFolder = framePlaceholderInFileName(pattern);  // a bad pattern fails first
   const VoxelQuantities& quantities = options.quantities;
   if (quantities.channelCount() == 0) {
     throw core::Error("EXR export to '" + pattern + "': no quantity selected");
@@ -118,10 +95,14 @@ VoxelExportStats writeFieldExrSlices(const std::string& pattern, const core::Ten
   const int channels = static_cast<int>(names.size());
   const int quantityChannels = quantities.channelCount();
 
-  static std::atomic<unsigned> counter{0};
-  const std::string stageTag =
-      ".tfd-staged" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
-  std::vector<fs::path> targets, staged, committed;
+  const fs::path folder = fs::path(expandFramePattern(pattern, 0)).parent_path();
+  if (ownsFolder) {  // temporaries of this pattern left by a killed process
+    removeStaleTemporaries(folder, [&](const std::string& name) {
+      return frameOfFileName(pattern, name).has_value();
+    });
+  }
+  std::vector<std::unique_ptr<StagedFile>> staged;
+  std::vector<fs::path> committed;
   field.mesh().locator();  // build once, outside the parallel loops
   try {
     std::vector<float> pixels(std::size_t(width) * height * channels);
@@ -154,13 +135,6 @@ VoxelExportStats writeFieldExrSlices(const std::string& pattern, const core::Ten
 
       const int frame = options.firstFrame + s;
       const fs::path target = expandFramePattern(pattern, frame);
-      fs::path stage = target;
-      std::string stageName = ".";  // hidden, extension kept last
-      stageName += target.stem().string();
-      stageName += stageTag;
-      stageName += target.extension().string();
-      stage.replace_filename(stageName);
-      targets.push_back(target);
 
       Imf::Header header(width, height);
       header.compression() = Imf::ZIP_COMPRESSION;
@@ -193,31 +167,29 @@ VoxelExportStats writeFieldExrSlices(const std::string& pattern, const core::Ten
       if (!options.source.empty()) {
         header.insert("tfd.source", Imf::StringAttribute(options.source));
       }
-      writeAtomically(stage, [&](const fs::path& temp) {
+      staged.push_back(std::make_unique<StagedFile>(target));
+      staged.back()->write([&](OutputFile& out) {
         try {
-          Imf::OutputFile file(temp.c_str(), header);
+          ExrOutput stream(out);
+          Imf::OutputFile file(stream, header);
           file.setFrameBuffer(frameBuffer);
           file.writePixels(height);
         } catch (const std::exception& e) {
           throw core::Error("cannot write EXR slice '" + target.string() + "': " + e.what());
         }
       });
-      staged.push_back(stage);
     }
     progress.throwIfCancelled();
-    for (std::size_t s = 0; s < staged.size(); ++s) {
-      std::error_code ec;
-      fs::rename(staged[s], targets[s], ec);
-      if (ec) {
-        throw core::Error("cannot write EXR slice '" + targets[s].string() + "': " + ec.message());
-      }
-      committed.push_back(targets[s]);
+    for (auto& file : staged) {
+      file->commit();
+      committed.push_back(file->target());
     }
   } catch (...) {
-    removeAll(staged);
+    staged.clear();  // removes the temporaries not yet renamed
     removeAll(committed);
     throw;
   }
+  if (ownsFolder) removeOtherSlices(pattern, folder, committed);
   progress.report(1.0, "writing EXR slices");
   stats.filesWritten = slices;
   stats.files = committed;

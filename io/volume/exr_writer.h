@@ -28,17 +28,21 @@
 //   tfd.rowStep (v3d, −y·h), tfd.tensorComponents (string "xx,yy,zz,xy,yz,xz"),
 //   tfd.generator, tfd.source (strings; source only when given).
 //
-// Atomicity: every slice is first written (through io::writeAtomically) to a hidden file
-// beside its target; only when all slices are written are they renamed into place. If any
-// slice fails or the export is cancelled, the hidden files and any slice already renamed are
-// removed, so no new slice file is left. Slice files of an earlier, longer export with the
-// same pattern are not removed.
+// Atomicity: every slice is first written to a hidden temporary beside its target
+// (io::StagedFile, checked for completeness); only when all slices are written are they
+// renamed into place. If any slice fails or the export is cancelled, the temporaries and any
+// slice already renamed are removed, so no new slice file is left.
+// Ownership: when the placeholder is in the file name, the exporter owns the files of its
+// pattern in that folder: after a successful export, slices of the pattern that this export
+// did not write (an earlier export with more slices or other frame numbers) are removed, and
+// temporaries of the pattern left by a killed process are removed before writing.
 #include <filesystem>
 #include <string>
 
 #include "core/progress.h"
 #include "core/tensor_field.h"
 #include "io/volume/field_resample.h"
+#include "io/volume/frame_pattern.h"
 #include "io/volume/vdb_writer.h"
 #include "io/volume/voxel_quantities.h"
 
@@ -55,10 +59,6 @@ struct ExrExportOptions {
   std::string generator = "tfd";
   std::string source;
 };
-
-/// `pattern` with its frame placeholder replaced by `frame`. Throws core::Error naming the
-/// pattern when it has no placeholder or more than one.
-std::string expandFramePattern(const std::string& pattern, int frame);
 
 /// Writes one EXR file per z-slice (see above). Throws core::Error for a bad pattern or voxel
 /// size, a grid above maxVoxels, no quantity selected, or a slice that cannot be written

@@ -1,5 +1,6 @@
 #include "io/volume/vdb_writer.h"
 
+#include <openvdb/io/Archive.h>
 #include <openvdb/openvdb.h>
 #include <tbb/parallel_for.h>
 
@@ -58,6 +59,16 @@ struct BlockLeaves {
   std::vector<std::unique_ptr<FloatLeaf>> floats;
   std::vector<std::unique_ptr<Vec3Leaf>> vectors;
   std::size_t active = 0;
+};
+
+/// What openvdb::io::File::write does (a seekable archive with grid offsets, so readers can
+/// load grids one by one), but onto a stream we own: io::File writes through its own
+/// std::ofstream and never checks it, so a full disk produced a truncated file and success.
+class SeekableVdbArchive : public openvdb::io::Archive {
+ public:
+  void write(std::ostream& os, const openvdb::GridPtrVec& grids, const openvdb::MetaMap& meta) {
+    openvdb::io::Archive::write(os, grids, /*seekable=*/true, meta);
+  }
 };
 
 /// Floor division by the leaf size, valid for negative indices.
@@ -186,14 +197,14 @@ VoxelExportStats writeFieldVdb(const std::filesystem::path& path, const core::Te
   fileMeta.insertMeta("voxel_convention",
                       openvdb::StringMetadata("voxel (i,j,k) is centred on world = origin + "
                                               "voxelSize * (i,j,k)"));
-  writeAtomically(path, [&](const std::filesystem::path& temp) {
+  writeAtomically(path, [&](OutputFile& out) {
     try {
-      openvdb::io::File file(temp.string());
-      file.write(grids, fileMeta);
-      file.close();
+      SeekableVdbArchive().write(out.stream(), grids, fileMeta);
     } catch (const openvdb::Exception& e) {
       throw core::Error("cannot write VDB file '" + path.string() + "': " + e.what());
     }
+    // OpenVDB does not look at the stream state: writeAtomically's check (OutputFile::close)
+    // reports a full disk or a file-size limit, and the old file stays.
   });
   stats.filesWritten = 1;
   stats.files = {path};

@@ -212,22 +212,19 @@ void VtkXmlWriter::dataArray(std::string_view name, int components, std::span<co
   array(name, VtkType::Float64, components, values.data(), values.size(), extra);
 }
 
-void VtkXmlWriter::save(const std::filesystem::path& path) {
+void VtkXmlWriter::save(OutputFile& out) {
   if (open_.size() != 1) {
     throw core::Error("VTK XML writer: " + std::to_string(open_.size()) +
                       " elements open at save(), expected only the root");
   }
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) throw core::Error("cannot open '" + path.string() + "' for writing");
-  out.write(xml_.data(), std::streamsize(xml_.size()));
+  std::ostream& s = out.stream();
+  s.write(xml_.data(), std::streamsize(xml_.size()));
   if (!appended_.empty()) {
-    out << "  <AppendedData encoding=\"raw\">\n   _";
-    out.write(appended_.data(), std::streamsize(appended_.size()));
-    out << "\n  </AppendedData>\n";
+    s << "  <AppendedData encoding=\"raw\">\n   _";
+    s.write(appended_.data(), std::streamsize(appended_.size()));
+    s << "\n  </AppendedData>\n";
   }
-  out << "</" << open_.back() << ">\n";
-  out.flush();
-  if (!out) throw core::Error("cannot write '" + path.string() + "' (disk full?)");
+  s << "</" << open_.back() << ">\n";
   open_.clear();
 }
 

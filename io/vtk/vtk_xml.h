@@ -18,6 +18,8 @@
 #include <utility>
 #include <vector>
 
+#include "io/output_file.h"
+
 namespace tfd::io {
 
 enum class VtkEncoding { Appended, Base64, Ascii };
@@ -49,10 +51,10 @@ class VtkXmlWriter {
   void dataArray(std::string_view name, int components, std::span<const double> values,
                  const Attributes& extra = {});
 
-  /// Writes the document to `path` (call through io::writeAtomically). Only the root element
-  /// may still be open; save() closes it (after the appended data). Throws core::Error
-  /// naming the file when writing fails.
-  void save(const std::filesystem::path& path);
+  /// Writes the document to `out` (from io::writeAtomically, which checks that every byte
+  /// reached the disk). Only the root element may still be open; save() closes it (after the
+  /// appended data).
+  void save(OutputFile& out);
 
  private:
   void array(std::string_view name, VtkType type, int components, const void* data,

@@ -160,7 +160,7 @@ void writeMeshVtu(const std::filesystem::path& path, const core::TetMesh& mesh,
   xml.end();  // Piece
   xml.end();  // UnstructuredGrid
   progress.throwIfCancelled();
-  writeAtomically(path, [&](const std::filesystem::path& temp) { xml.save(temp); });
+  writeAtomically(path, [&](OutputFile& out) { xml.save(out); });
   progress.report(1.0, "VTU written");
 }
 

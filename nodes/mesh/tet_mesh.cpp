@@ -45,13 +45,23 @@ void declare(graph::NodeDecl& d) {
   d.param<int>("target_tets")
       .byDefault(20000)
       .min(10)
-      .max(50000000)
+      .max(10000000)
       .doc(
           "Wanted number of tets (TetGen; within about 25 % for primitives). Ignored for tet "
-          "mesh files.");
+          "mesh files. The maximum, 10 million, takes TetGen a few minutes and about 4 GB; a "
+          "request whose estimated memory exceeds what is available (or --max-memory) is "
+          "refused before meshing.");
   d.param<double>("quality").byDefault(1.414).min(0).max(10).doc(
       "TetGen radius-edge ratio bound; 0 switches quality refinement off, otherwise it "
       "must be above 1.1.");
+  d.param<double>("time_limit")
+      .byDefault(0)
+      .min(0)
+      .max(86400)
+      .doc(
+          "Seconds TetGen may run before it is stopped and the node fails; 0: automatic, "
+          "30 s + 40 s per million target tets. (Some surfaces, e.g. with one vertex far "
+          "away, keep TetGen's refinement from ending.)");
   d.param<std::string>("boundary")
       .choices({"auto", "keep", "refine"})
       .doc(
@@ -81,6 +91,7 @@ io::TetgenOptions tetgenOptions(const graph::CookContext& c, const core::Surface
     o.keepBoundary = primitive || core::meanEdgeLength(surface) <= kKeepableEdgeRatio * wanted;
   }
   if (!o.keepBoundary) o.volumeFactor = kRefineVolumeFactor;
+  o.timeLimit = c.param<double>("time_limit");
   o.source = std::move(source);
   return o;
 }

@@ -163,5 +163,20 @@ TEST_F(Cli, InfoDescribesGraphFilesAndRefusesUnknownKinds) {
   EXPECT_TRUE(has(r.err, "no describer")) << r.err;
 }
 
+TEST_F(Cli, NumbersBeyondTheDoubleRangeAreLoadErrorsNotAborts) {
+  const fs::path graph = dir / "huge.tfd.json";
+  std::ofstream(graph) << R"({"format": "tfd-graph", "formatVersion": 1e400, "nodes": {}})";
+  for (const std::string command : {"validate ", "cook ", "info "}) {
+    const CliRun r = runCli(command + q(graph));
+    EXPECT_EQ(r.exitCode, 2) << command << r.err;
+    EXPECT_TRUE(has(r.err, "huge.tfd.json at /formatVersion: the number '1e400' is beyond"))
+        << command << r.err;
+  }
+  const CliRun r = runCli("upgrade " + q(graph) + " -o " + q(dir / "new.tfd.json"));
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_TRUE(has(r.err, "beyond the range of a double")) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "new.tfd.json"));
+}
+
 }  // namespace
 }  // namespace tfd::test

@@ -297,6 +297,35 @@ TEST_F(GraphFile, JsonPointerOfDuplicateKeysInsideArrays) {
   }
 }
 
+TEST_F(GraphFile, NumbersBeyondTheDoubleRangeAreLoadErrorsAtTheirPlace) {
+  const std::vector<BadFile> cases = {
+      {"format version", R"({"format": "tfd-graph", "formatVersion": 1e400, "nodes": {}})",
+       "/formatVersion", "the number '1e400' is beyond the range of a double"},
+      {"param", doc(R"("c": {"type": "Constant", "typeVersion": 1, "params": {"value": 1e309}})"),
+       "/nodes/c/params/value", "the number '1e309' is beyond the range of a double"},
+      {"array element",
+       doc("\"a\": {\"type\": \"AllParams\", \"typeVersion\": 1, \"params\": {\"position\": "
+           "[1, 2,\n -1e999]}}"),
+       "/nodes/a/params/position/2", "'-1e999' is beyond the range of a double"},
+  };
+  for (const BadFile& c : cases) {
+    SCOPED_TRACE(c.name);
+    const LoadError e = loadError(c.text);
+    EXPECT_EQ(e.pointer(), c.pointer) << e.what();
+    EXPECT_NE(e.message().find(c.message), std::string::npos) << e.what();
+  }
+  EXPECT_NE(loadError(cases[2].text).message().find("line 2, column 8"), std::string::npos)
+      << loadError(cases[2].text).what();
+}
+
+TEST_F(GraphFile, BinaryBytesInInvalidJsonAreNotEchoedRaw) {
+  const LoadError e = loadError(std::string("{\"format\": \"tfd-graph\", \"a\xff\x01\": 1}"));
+  const std::string what = e.what();
+  EXPECT_EQ(what.find('\xff'), std::string::npos) << what;
+  EXPECT_EQ(what.find('\x01'), std::string::npos) << what;
+  EXPECT_NE(what.find("\\xff"), std::string::npos) << what;
+}
+
 TEST_F(GraphFile, FilesAreReadAndWrittenWhole) {
   const fs::path dir = fs::temp_directory_path() / ("tfd_graph_file_" + std::to_string(::getpid()));
   fs::create_directories(dir);

@@ -4,6 +4,7 @@
 #include "tests/support/temp_dir.h"
 
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 #include <tbb/global_control.h>
 #include <unistd.h>
 
@@ -275,6 +276,48 @@ TEST(ExrWriter, SlicesAreByteIdenticalForOneAndTwoThreads) {
     ASSERT_EQ(a, readBytes(io::expandFramePattern((dir.path() / "t2.%03d.exr").string(), s))) << s;
   }
   EXPECT_EQ(dir.entries().size(), 2u * slices);
+}
+
+TEST(ExrWriter, ReExportWithFewerSlicesRemovesTheOldExtraSlicesOfItsPattern) {
+  TempDir dir("owns");
+  const auto field = linearField(test::carvedBall(6, Vec3(0, 0, 0), 1.0));
+  io::ExrExportOptions options;
+  options.voxelSize = 0.1;
+  const std::string pattern = (dir.path() / "f.%03d.exr").string();
+  const int fine = io::writeFieldExrSlices(pattern, field, options).filesWritten;
+  // Files that only look alike stay: other names, other padding, other patterns.
+  for (const char* other : {"f.5.exr", "f.0001.exr", "g.001.exr", "f.001.exr.txt"})
+    std::ofstream(dir.path() / other) << "not ours";
+  // A staged slice of a killed export (its process is gone) is removed too.
+  const pid_t dead = ::fork();
+  if (dead == 0) ::_exit(0);
+  ::waitpid(dead, nullptr, 0);
+  std::ofstream(dir.path() / (".f.007.tfd-tmp" + std::to_string(dead) + "-4.exr")) << "partial";
+  options.voxelSize = 0.25;
+  const int coarse = io::writeFieldExrSlices(pattern, field, options).filesWritten;
+  ASSERT_LT(coarse, fine);
+  std::vector<std::string> expected{"f.0001.exr", "f.001.exr.txt", "f.5.exr", "g.001.exr"};
+  for (int s = 0; s < coarse; ++s)
+    expected.push_back(fs::path(io::expandFramePattern(pattern, s)).filename());
+  std::sort(expected.begin(), expected.end());
+  EXPECT_EQ(dir.entries(), expected);
+  for (int s = 0; s < coarse; ++s) {
+    const io::ExrImage image = io::readExrImage(io::expandFramePattern(pattern, s));
+    EXPECT_EQ(attrNumber(image, "tfd.sliceCount"), coarse);
+  }
+}
+
+TEST(ExrWriter, FrameOfFileNameAcceptsExactlyWhatThePatternWrites) {
+  EXPECT_EQ(io::frameOfFileName("out/f.%03d.exr", "f.012.exr"), 12);
+  EXPECT_EQ(io::frameOfFileName("f.%03d.exr", "f.1234.exr"), 1234);
+  EXPECT_EQ(io::frameOfFileName("f.%03d.exr", "f.-02.exr"), -2);
+  EXPECT_EQ(io::frameOfFileName("s####.exr", "s0007.exr"), 7);
+  EXPECT_FALSE(io::frameOfFileName("f.%03d.exr", "f.12.exr"));
+  EXPECT_FALSE(io::frameOfFileName("f.%03d.exr", "f.0012.exr"));
+  EXPECT_FALSE(io::frameOfFileName("f.%d.exr", "f.x.exr"));
+  EXPECT_FALSE(io::frameOfFileName("f.%d.exr", "f..exr"));
+  EXPECT_TRUE(io::framePlaceholderInFileName("a/b/f.%d.exr"));
+  EXPECT_FALSE(io::framePlaceholderInFileName("a/%d/f.exr"));
 }
 
 }  // namespace
