@@ -94,6 +94,54 @@ bool GraphDocument::disconnect(const graph::Endpoint& from, const graph::Endpoin
   });
 }
 
+bool GraphDocument::relink(const graph::Link& old, const std::optional<graph::Endpoint>& newTo) {
+  if (newTo && *newTo == old.to) return true;
+  return edit(newTo ? "Reconnect " + q(old.from.str()) + " to " + q(newTo->str())
+                    : "Disconnect " + q(old.to.str()),
+              kStructureChanged, [&](graph::Graph& g) {
+                if (!g.disconnect(old.from, old.to))
+                  throw graph::GraphError("no link " + old.from.str() + " -> " + old.to.str());
+                if (newTo) {
+                  const graph::PortDecl* in = g.node(newTo->node).decl().findInput(newTo->port);
+                  if (in && !in->multiple)
+                    for (const graph::Link& l : g.linksInto(newTo->node, newTo->port))
+                      g.disconnect(l.from, l.to);
+                  g.connect(old.from, *newTo);
+                }
+              });
+}
+
+std::string GraphDocument::addNodeLinked(std::string_view type, QPointF position,
+                                         const graph::Endpoint& other, bool otherIsOutput) {
+  std::string added;
+  const bool ok = edit("Add " + q(type), kStructureChanged, [&](graph::Graph& g) {
+    added = g.addNode(type).name();
+    g.setUi(added, withPosition(graph::Json::object(), position));
+    const graph::Node& n = g.node(other.node);
+    const graph::PortDecl* otherPort =
+        otherIsOutput ? n.decl().findOutput(other.port) : n.decl().findInput(other.port);
+    if (!otherPort) throw graph::GraphError("unknown port " + other.str());
+    const auto& ports =
+        otherIsOutput ? g.node(added).decl().inputs() : g.node(added).decl().outputs();
+    for (const graph::PortDecl& p : ports) {
+      if (p.type != otherPort->type) continue;
+      const graph::Endpoint mine{added, p.name};
+      if (otherIsOutput) {
+        g.connect(other, mine);
+      } else {
+        if (!otherPort->multiple)
+          for (const graph::Link& l : g.linksInto(other.node, other.port))
+            g.disconnect(l.from, l.to);
+        g.connect(mine, other);
+      }
+      return;
+    }
+    throw graph::GraphError(std::string(type) + " has no port of type " +
+                            std::string(otherPort->type->name));
+  });
+  return ok ? added : std::string();
+}
+
 bool GraphDocument::canConnect(const graph::Endpoint& from, const graph::Endpoint& to) const {
   graph::Graph copy = graph_;
   try {

@@ -18,6 +18,7 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -57,6 +58,13 @@ class GraphDocument : public QObject {
   /// Links an output to an input. A link already in a single input is replaced (one step).
   bool connect(const graph::Endpoint& from, const graph::Endpoint& to);
   bool disconnect(const graph::Endpoint& from, const graph::Endpoint& to);
+  /// Moves the input end of an existing link to `newTo`, or removes the link when `newTo` is
+  /// empty (a link picked up from an input and dropped elsewhere), as one step.
+  bool relink(const graph::Link& old, const std::optional<graph::Endpoint>& newTo);
+  /// Adds a node and links it to `other` (an output when `otherIsOutput`, else an input)
+  /// through its first compatible port, as one step (a link dropped on empty space).
+  std::string addNodeLinked(std::string_view type, QPointF position, const graph::Endpoint& other,
+                            bool otherIsOutput);
   /// Would connect() accept this link? (Changes nothing.)
   bool canConnect(const graph::Endpoint& from, const graph::Endpoint& to) const;
   /// Sets a parameter. `continuous` edits of the same parameter (a slider scrub) merge into one
