@@ -47,7 +47,7 @@ bool GraphDocument::edit(const QString& text, int flags,
 }
 
 void GraphDocument::applySnapshot(const graph::Graph& graph, int flags) {
-  emit aboutToChange();
+  emit aboutToChange(flags);
   std::filesystem::path source = graph_.sourcePath();
   graph_ = graph;
   graph_.setSourcePath(source);
@@ -239,7 +239,7 @@ std::vector<std::string> GraphDocument::duplicate(const std::vector<std::string>
 }
 
 void GraphDocument::reset(graph::Graph graph, const std::filesystem::path& path, bool dirty) {
-  emit aboutToChange();
+  emit aboutToChange(kDocumentReplaced | kStructureChanged | kParamsChanged | kUiChanged);
   undo_.clear();
   graph_ = std::move(graph);
   path_ = path;

@@ -106,7 +106,8 @@ class GraphDocument : public QObject {
   void applySnapshot(const graph::Graph& graph, int flags);
 
  signals:
-  void aboutToChange();
+  /// Before an accepted edit, undo or redo changes the graph (flags: what will change).
+  void aboutToChange(int flags);
   void changed(int flags);
   void editRefused(const QString& message);
   /// The file path or the dirty state changed.
