@@ -63,10 +63,19 @@ void Camera::zoom(double factor) {
   distance = std::clamp(distance / factor, 1e-3 * sceneRadius, 100 * sceneRadius);
 }
 
-void Camera::frame(const Bounds& bounds) {
+void Camera::frame(const Bounds& bounds, double aspect) {
   target = bounds.center();
   sceneRadius = std::max(1e-9, bounds.radius());
-  distance = 1.15 * sceneRadius / std::sin(fovY / 2);
+  const double ty = std::tan(fovY / 2) * 0.9, tx = ty * std::max(0.1, aspect);
+  double d = 0;
+  for (int k = 0; k < 8; ++k) {
+    const Vec3 c(k & 1 ? bounds.max.x() : bounds.min.x(), k & 2 ? bounds.max.y() : bounds.min.y(),
+                 k & 4 ? bounds.max.z() : bounds.min.z());
+    const Vec3 r = c - target;
+    const double z = r.dot(backward());
+    d = std::max({d, z + std::abs(r.dot(right())) / tx, z + std::abs(r.dot(up())) / ty});
+  }
+  distance = std::max(d, 1e-3 * sceneRadius);
 }
 
 void Camera::setPreset(ViewPreset preset) {

@@ -56,8 +56,9 @@ class Camera {
   void orbit(double dxPixels, double dyPixels);
   void pan(double dxPixels, double dyPixels, int viewportHeight);
   void zoom(double factor);
-  /// Looks at the bounds' centre from a distance that shows all of them.
-  void frame(const Bounds& bounds);
+  /// Looks at the bounds' centre from the nearest distance at which all eight corners of the
+  /// box fit in the view (with a margin), for the current direction and this aspect ratio.
+  void frame(const Bounds& bounds, double aspect = 4.0 / 3.0);
   void setPreset(ViewPreset preset);
 
   /// Pixel position (x right, y down) and depth in [0, 1] of a world point; nothing when it is

@@ -134,7 +134,8 @@ Image renderImage(const Scene& scene, const RenderRequest& request) {
   renderer.upload(scene);
   Camera camera;
   camera.setPreset(request.view);
-  camera.frame(scene.bounds.valid() ? scene.bounds : Bounds{Vec3(-1, -1, -1), Vec3(1, 1, 1)});
+  camera.frame(scene.bounds.valid() ? scene.bounds : Bounds{Vec3(-1, -1, -1), Vec3(1, 1, 1)},
+               double(request.width) / request.height);
   context.bind();
   renderer.draw(camera, request.width, request.height, request.draw);
   Image image = context.read();

@@ -23,7 +23,9 @@ core::PointPattern segmentPattern(const core::DegenerateCurve& c, std::size_t i,
 }
 
 void addFrame(Scene& scene, const Vec3& origin, const core::Mat3& frame, double length) {
-  static const Rgba axes[3] = {{230, 60, 60, 255}, {60, 200, 60, 255}, {70, 110, 255, 255}};
+  // Shades of the design-element magenta, never a Figure 5 colour: u light, v violet,
+  // third axis (a curve's tangent, a degenerate point's non-degenerate direction) white-pink.
+  static const Rgba axes[3] = {{255, 150, 255, 255}, {170, 90, 255, 255}, {255, 225, 255, 255}};
   for (int k = 0; k < 3; ++k)
     scene.overlay.add(origin, origin + length * frame.col(k), axes[k], axes[k]);
 }

@@ -41,8 +41,9 @@ void addBoundary(Scene& scene, const core::TetMesh& mesh);
 /// Segments coloured by curve type and the pattern of their points (L-wedge green,
 /// L-trisector blue, P-wedge yellow, P-trisector red); transition points white.
 void addCurves(Scene& scene, const core::DegenerateCurves& curves);
-/// Curve elements as polylines through their samples with short frame axes (red u, green v,
-/// blue tangent); point elements as points with their frames. `frameLength` in world units.
+/// Curve elements as polylines through their samples with short frame axes (in shades of
+/// magenta: light u, violet v, white-pink tangent); point elements as points with their frames.
+/// `frameLength` in world units.
 void addConstraints(Scene& scene, const core::ConstraintSet& set, double frameLength);
 void addSlice(Scene& scene, const core::TensorField& field, const SliceSettings& slice);
 void addSphereOutline(Scene& scene, const Vec3& center, double radius, Rgba colour);
