@@ -31,6 +31,14 @@ find_path(OPENVDB_MODULE_DIR FindOpenVDB.cmake
 list(APPEND CMAKE_MODULE_PATH ${OPENVDB_MODULE_DIR})
 find_package(OpenVDB REQUIRED)
 
+# OpenGL through GLVND (libOpenGL, no GLX) and EGL: render/ draws into whatever context is
+# current (the editor's QOpenGLWidget under X, or a surfaceless EGL context for `tfd render`).
+find_package(OpenGL REQUIRED COMPONENTS OpenGL EGL)
+find_package(PNG REQUIRED)
+if(TFD_BUILD_EDITOR)
+  find_package(Qt6 6.2 REQUIRED COMPONENTS Widgets OpenGL OpenGLWidgets)
+endif()
+
 if(TFD_BUILD_TESTS)
   find_package(GTest REQUIRED)
 endif()

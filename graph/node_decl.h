@@ -117,6 +117,11 @@ class ParamBuilder {
     p_.fileFilter = std::move(filter);
     return *this;
   }
+  /// A check beyond range and choices: `fn` throws std::exception saying what is wrong.
+  ParamBuilder& check(std::function<void(const T&)> fn) {
+    p_.check = [fn = std::move(fn)](const ParamValue& v) { fn(ParamTraits<T>::fromValue(v)); };
+    return *this;
+  }
   const ParamDecl& decl() const { return p_; }
 
  private:

@@ -163,7 +163,17 @@ std::string describeConstraints(const ParamDecl& d) {
   return out;
 }
 
-ParamValue checkParamValue(const ParamDecl& d, ParamValue value) {
+namespace {
+void runCheck(const ParamDecl& d, const ParamValue& value) {
+  if (!d.check) return;
+  try {
+    d.check(value);
+  } catch (const std::exception& e) {
+    throw GraphError(e.what());
+  }
+}
+
+ParamValue checkKindAndRange(const ParamDecl& d, ParamValue value) {
   const int want = static_cast<int>(d.kind);
   if (d.kind == ParamKind::Double && std::holds_alternative<std::int64_t>(value))
     value = static_cast<double>(std::get<std::int64_t>(value));
@@ -208,15 +218,24 @@ ParamValue checkParamValue(const ParamDecl& d, ParamValue value) {
   }
   return value;
 }
+}  // namespace
+
+ParamValue checkParamValue(const ParamDecl& d, ParamValue value) {
+  value = checkKindAndRange(d, std::move(value));
+  runCheck(d, value);
+  return value;
+}
 
 ParamValue paramFromJson(const ParamDecl& d, const Json& j) {
   // Range, choice and size errors quote the JSON as written, not the converted value.
   auto checkParamValue = [&](const ParamDecl& decl, ParamValue v) {
     try {
-      return graph::checkParamValue(decl, std::move(v));
+      v = checkKindAndRange(decl, std::move(v));
     } catch (const GraphError&) {
       mismatch(decl, describeJson(j));
     }
+    runCheck(decl, v);
+    return v;
   };
   switch (d.kind) {
     case ParamKind::Bool:

@@ -15,6 +15,7 @@
 // min/max are inclusive and apply to int, double and every component of vec3 and lists.
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -61,6 +62,10 @@ struct ParamDecl {
   std::string label;                 ///< display label; empty: derived from the name
   UiHint hint = UiHint::Auto;
   std::string fileFilter;  ///< file hints: e.g. "*.obj *.ply *.off"
+  /// Optional check beyond kind, range, choices and size (e.g. that an expression parses):
+  /// throws std::exception whose message says what is wrong. Runs in checkParamValue, so
+  /// Graph::setParam, file loading and an editor's as-you-type validation all use it.
+  std::function<void(const ParamValue&)> check;
 
   bool isInputFile() const { return hint == UiHint::InputFile; }
   bool isOutputFile() const { return hint == UiHint::OutputFile; }
@@ -80,7 +85,8 @@ std::string describeExpected(const ParamDecl& decl);
 std::string describeConstraints(const ParamDecl& decl);
 
 /// Converts a value to the declared kind (int -> double) and checks kind, range, choices and
-/// sizes. Throws GraphError("expected <...>, found <...>") without naming node or parameter.
+/// sizes, then runs the declaration's `check`. Throws GraphError("expected <...>, found <...>",
+/// or the check's message) without naming node or parameter.
 ParamValue checkParamValue(const ParamDecl& decl, ParamValue value);
 /// Parses the JSON form; same checks and errors as checkParamValue.
 ParamValue paramFromJson(const ParamDecl& decl, const Json& json);

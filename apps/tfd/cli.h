@@ -34,5 +34,6 @@ void addValidateCommand(CLI::App& app, const Context& context, int& exitCode);
 void addNodesCommand(CLI::App& app, const Context& context, int& exitCode);
 void addInfoCommand(CLI::App& app, const Context& context, int& exitCode);
 void addUpgradeCommand(CLI::App& app, const Context& context, int& exitCode);
+void addRenderCommand(CLI::App& app, const Context& context, int& exitCode);
 
 }  // namespace tfd::cli

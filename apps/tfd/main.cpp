@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
   cli::addNodesCommand(app, context, exitCode);
   cli::addInfoCommand(app, context, exitCode);
   cli::addUpgradeCommand(app, context, exitCode);
+  cli::addRenderCommand(app, context, exitCode);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {  // --help, --version

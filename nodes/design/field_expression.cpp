@@ -19,7 +19,14 @@ void declare(graph::NodeDecl& d) {
   const char* defaults[6] = {"x", "-x", "0", "y", "0", "0"};
   for (int i = 0; i < 6; ++i) {
     const std::string name = core::tensorComponentNames()[i];
-    d.param<std::string>(name).byDefault(defaults[i]).doc("Expression for T." + name + ".");
+    d.param<std::string>(name)
+        .byDefault(defaults[i])
+        .check([i](const std::string& text) {
+          core::TensorExpressions one;  // the other components stay "0"
+          one.components[i] = text;
+          core::checkExpressions(one);
+        })
+        .doc("Expression for T." + name + ".");
   }
 }
 

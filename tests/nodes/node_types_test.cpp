@@ -138,6 +138,34 @@ TEST(NodeTypes, BadParametersFailTheNodeNamingTheParameter) {
   EXPECT_TRUE(dir.entries().empty()) << "nothing written";
 }
 
+TEST(NodeTypes, FieldExpressionRefusesAnExpressionThatDoesNotParseWhenItIsSet) {
+  // The declaration's check runs on every set: the editor validates as the user types, a file
+  // with a bad expression fails to load at the parameter's place, and `--set` is refused.
+  graph::NodeRegistry registry;
+  registerAll(registry);
+  graph::Graph g(registry);
+  g.addNode("FieldExpression", "e");
+  try {
+    g.setParam("e", "xy", std::string("x * * y"));
+    FAIL() << "accepted";
+  } catch (const graph::GraphError& e) {
+    EXPECT_NE(std::string(e.what()).find("parameter \"xy\" of node \"e\" (FieldExpression): "),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(g.param("e", "xy"), graph::ParamValue(std::string("y")));
+  g.setParam("e", "xy", std::string("sin(x) * y"));
+  try {
+    graph::parseGraph(R"({"format": "tfd-graph", "formatVersion": 2, "nodes": {
+        "e": {"type": "FieldExpression", "typeVersion": 1, "params": {"zz": "1 +"}}},
+        "links": []})",
+                      registry, "bad.tfd.json");
+    FAIL() << "loaded";
+  } catch (const graph::LoadError& e) {
+    EXPECT_EQ(e.pointer(), "/nodes/e/params/zz");
+  }
+}
+
 TEST(NodeTypes, VoxelExportsRefuseAVoxelSizeThatGivesTooManyVoxels) {
   test::TempDir dir("node-types-voxels");
   const graph::CookResult r = cookText(R"({
