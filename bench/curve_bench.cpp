@@ -89,7 +89,7 @@ Scene& scene() {
     const char* env = std::getenv("TFD_BENCH_TETS");
     const double tets = env ? std::atof(env) : 1e6;
     auto t0 = std::chrono::steady_clock::now();
-    s.mesh = io::meshPrimitive("sphere", tets);
+    s.mesh = io::meshPrimitive(core::PrimitiveShape::Sphere, tets);
     std::fprintf(stderr, "mesh: %zu tets, %zu vertices, mean edge %.4f (%.1f s)\n",
                  s.mesh->tetCount(), s.mesh->vertexCount(), s.mesh->meanEdgeLength(), seconds(t0));
     t0 = std::chrono::steady_clock::now();

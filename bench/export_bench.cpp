@@ -50,7 +50,7 @@ void BM_VdbExport(benchmark::State& state, bool everything) {
   io::VdbExportOptions options;
   options.voxelSize = kVoxelSize;
   if (everything) {
-    options.quantities = io::VoxelQuantities::fromNames({"tensor", "eigenvalues", "eigenvectors"});
+    options.quantities = io::VoxelQuantities{true, true, true, {}};
   }
   const auto path = outDir() / "bench.vdb";
   std::size_t active = 0;

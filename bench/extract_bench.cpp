@@ -28,7 +28,7 @@ using namespace tfd;
 std::shared_ptr<const core::TetMesh> sphere(int tets) {
   static std::map<int, std::shared_ptr<const core::TetMesh>> cache;
   auto& mesh = cache[tets];
-  if (!mesh) mesh = io::meshPrimitive("sphere", tets);
+  if (!mesh) mesh = io::meshPrimitive(core::PrimitiveShape::Sphere, tets);
   return mesh;
 }
 

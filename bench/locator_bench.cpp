@@ -16,7 +16,7 @@ namespace {
 using namespace tfd;
 
 const std::shared_ptr<const core::TetMesh>& sphere() {
-  static const auto mesh = io::meshPrimitive("sphere", 1'000'000);
+  static const auto mesh = io::meshPrimitive(core::PrimitiveShape::Sphere, 1'000'000);
   return mesh;
 }
 

@@ -47,7 +47,7 @@ std::shared_ptr<const TetMesh> sphere(int targetTets) {
   static std::map<int, std::shared_ptr<const TetMesh>> cache;
   auto& mesh = cache[targetTets];
   if (!mesh) {
-    mesh = tfd::io::meshPrimitive("sphere", targetTets);
+    mesh = tfd::io::meshPrimitive(tfd::core::PrimitiveShape::Sphere, targetTets);
     mesh->locator();  // built once with the mesh, as the graph's mesh node would
   }
   return mesh;

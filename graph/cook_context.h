@@ -61,6 +61,19 @@ class CookContext {
       throw NodeError("parameter '" + d.name + "': " + e.what());
     }
   }
+  /// An enum parameter as its enum, through the table it was declared with.
+  template <class E>
+  E param(std::string_view name, const Choices<E>& table) const {
+    return table.value(param<std::string>(name));
+  }
+  /// A string-list parameter of choices as enums, in the order given.
+  template <class E>
+  std::vector<E> paramList(std::string_view name, const Choices<E>& table) const {
+    std::vector<E> out;
+    for (const std::string& s : param<std::vector<std::string>>(name))
+      out.push_back(table.value(s));
+    return out;
+  }
   /// A file parameter, resolved (input files against the graph's folder, outputs against the
   /// output directory). Empty when the parameter is empty.
   std::filesystem::path path(std::string_view name) const;

@@ -72,8 +72,9 @@ void NodeDecl::finalize() {
     const std::string where = "parameter '" + p.name + "'";
     if (!isIdentifier(p.name)) fail(where + ": not an identifier");
     if (!seen.insert(p.name).second) fail("duplicate " + where);
-    if (!p.choices.empty()) {
-      if (p.kind != ParamKind::String) fail(where + ": choices need a string parameter");
+    if (!p.choices.empty() && p.kind != ParamKind::String && p.kind != ParamKind::StringList)
+      fail(where + ": choices need a string or string-list parameter");
+    if (!p.choices.empty() && p.kind == ParamKind::String) {
       if (std::get<std::string>(p.defaultValue).empty() &&
           std::find(p.choices.begin(), p.choices.end(), "") == p.choices.end())
         p.defaultValue = p.choices.front();

@@ -83,6 +83,11 @@ class ParamBuilder {
     p_.choices = std::move(values);
     return *this;
   }
+  /// An enum parameter (string) or a set of options (string list) from its string table.
+  template <class E>
+  ParamBuilder& choices(const Choices<E>& table) {
+    return choices(table.names());
+  }
   /// Double lists: exact number of values (the default becomes that many zeros if not set).
   ParamBuilder& size(std::size_t n) {
     p_.size = n;

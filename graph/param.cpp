@@ -37,6 +37,14 @@ std::string rangeSuffix(const ParamDecl& d, bool integer, std::string_view each 
   return std::string(each) + " " + r;
 }
 
+/// "\"a\", \"b\", \"c\"" for the choices of an enum.
+std::string quotedChoices(const ParamDecl& d) {
+  std::string out;
+  for (std::size_t i = 0; i < d.choices.size(); ++i)
+    out += (i ? ", \"" : "\"") + d.choices[i] + "\"";
+  return out;
+}
+
 [[noreturn]] void mismatch(const ParamDecl& d, const std::string& found) {
   throw GraphError("expected " + describeExpected(d) + ", found " + found);
 }
@@ -78,6 +86,8 @@ std::string_view kindName(ParamKind kind) {
       return "vec3 list";
     case ParamKind::DoubleList:
       return "double list";
+    case ParamKind::StringList:
+      return "string list";
   }
   return "?";
 }
@@ -113,6 +123,7 @@ std::string typeLabel(const ParamDecl& d) {
     if (d.isOutputFile()) return "output file";
   }
   if (d.kind == ParamKind::DoubleList && d.size) return "double[" + std::to_string(*d.size) + "]";
+  if (d.kind == ParamKind::StringList && !d.choices.empty()) return "enum list";
   return std::string(kindName(d.kind));
 }
 
@@ -124,11 +135,13 @@ std::string describeExpected(const ParamDecl& d) {
       return "an integer" + rangeSuffix(d, true);
     case ParamKind::Double:
       return "a number" + rangeSuffix(d, false);
-    case ParamKind::String: {
+    case ParamKind::String:
       if (d.choices.empty()) return d.isPath() ? "a file path (string)" : "a string";
-      std::string out = "one of ";
-      for (std::size_t i = 0; i < d.choices.size(); ++i)
-        out += (i ? ", \"" : "\"") + d.choices[i] + "\"";
+      return "one of " + quotedChoices(d);
+    case ParamKind::StringList: {
+      std::string out = d.choices.empty() ? "an array of strings"
+                                          : "an array of strings, each one of " + quotedChoices(d);
+      if (d.minSize) out += " (at least " + std::to_string(d.minSize) + ")";
       return out;
     }
     case ParamKind::Vec3:
@@ -149,9 +162,11 @@ std::string describeExpected(const ParamDecl& d) {
 }
 
 std::string describeConstraints(const ParamDecl& d) {
-  if (d.kind == ParamKind::String && !d.choices.empty()) {
+  if ((d.kind == ParamKind::String || d.kind == ParamKind::StringList) && !d.choices.empty()) {
     std::string out;
     for (std::size_t i = 0; i < d.choices.size(); ++i) out += (i ? " | " : "") + d.choices[i];
+    if (d.kind == ParamKind::StringList && d.minSize)
+      out = "at least " + std::to_string(d.minSize) + " of " + out;
     return out;
   }
   std::string out = rangeText(d, d.kind == ParamKind::Int);
@@ -213,6 +228,15 @@ ParamValue checkKindAndRange(const ParamDecl& d, ParamValue value) {
         mismatch(d, foundText(value));
       for (double c : list)
         if (!inRange(d, c)) mismatch(d, foundText(value));
+      break;
+    }
+    case ParamKind::StringList: {
+      const auto& list = std::get<std::vector<std::string>>(value);
+      if (list.size() < d.minSize) mismatch(d, foundText(value));
+      for (const auto& s : list)
+        if (!d.choices.empty() &&
+            std::find(d.choices.begin(), d.choices.end(), s) == d.choices.end())
+          mismatch(d, foundText(value));
       break;
     }
   }
@@ -289,6 +313,15 @@ ParamValue paramFromJson(const ParamDecl& d, const Json& j) {
       }
       return checkParamValue(d, std::move(list));
     }
+    case ParamKind::StringList: {
+      if (!j.is_array()) mismatch(d, describeJson(j));
+      std::vector<std::string> list;
+      for (const auto& c : j) {
+        if (!c.is_string()) mismatch(d, describeJson(j));
+        list.push_back(c.get<std::string>());
+      }
+      return checkParamValue(d, std::move(list));
+    }
   }
   mismatch(d, describeJson(j));
 }
@@ -303,9 +336,10 @@ Json paramToJson(const ParamValue& value) {
           Json out = Json::array();
           for (const auto& p : v) out.push_back(Json::array({p[0], p[1], p[2]}));
           return out;
-        } else if constexpr (std::is_same_v<V, std::vector<double>>) {
+        } else if constexpr (std::is_same_v<V, std::vector<double>> ||
+                             std::is_same_v<V, std::vector<std::string>>) {
           Json out = Json::array();
-          for (double c : v) out.push_back(c);
+          for (const auto& c : v) out.push_back(c);
           return out;
         } else {
           return Json(v);
@@ -359,6 +393,24 @@ ParamValue paramFromText(const ParamDecl& d, std::string_view text) {
       if (j.is_discarded()) mismatch(d, quoted + " (not valid JSON)");
       return paramFromJson(d, j);
     }
+    case ParamKind::StringList: {
+      // JSON (["a", "b"]) or comma-separated words (a,b); an empty text is the empty list.
+      const std::string_view t = trimmed(text);
+      if (!t.empty() && t.front() == '[') {
+        Json j = Json::parse(t, nullptr, /*allow_exceptions=*/false);
+        if (j.is_discarded()) mismatch(d, quoted + " (not valid JSON)");
+        return paramFromJson(d, j);
+      }
+      std::vector<std::string> list;
+      for (std::size_t start = 0; start <= t.size() && !t.empty();) {
+        const std::size_t comma = std::min(t.find(',', start), t.size());
+        const std::string_view item = trimmed(t.substr(start, comma - start));
+        if (item.empty()) mismatch(d, quoted + " (an empty item)");
+        list.emplace_back(item);
+        start = comma + 1;
+      }
+      return checkParamValue(d, std::move(list));
+    }
   }
   mismatch(d, quoted);
 }
@@ -376,9 +428,10 @@ void hashParamValue(Hasher& h, const ParamValue& value) {
           h.add(static_cast<std::uint64_t>(v.size()));
           for (const auto& p : v)
             for (double c : p) h.add(c);
-        } else if constexpr (std::is_same_v<V, std::vector<double>>) {
+        } else if constexpr (std::is_same_v<V, std::vector<double>> ||
+                             std::is_same_v<V, std::vector<std::string>>) {
           h.add(static_cast<std::uint64_t>(v.size()));
-          for (double c : v) h.add(c);
+          for (const auto& c : v) h.add(c);
         } else {
           h.add(v);
         }
@@ -387,6 +440,9 @@ void hashParamValue(Hasher& h, const ParamValue& value) {
 }
 
 namespace detail {
+void unknownChoice(std::string_view name) {
+  throw GraphError("\"" + std::string(name) + "\" is not one of the declared choices");
+}
 std::int64_t paramAsInt64(const ParamValue& v) { return std::get<std::int64_t>(v); }
 int paramAsInt(const ParamValue& v) {
   std::int64_t x = std::get<std::int64_t>(v);

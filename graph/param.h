@@ -12,13 +12,21 @@
 //   vec3        [x, y, z]
 //   vec3 list   [[x, y, z], ...]
 //   double list [a, b, ...] (optionally of a fixed size, e.g. 6 tensor components)
+//   string list ["a", "b", ...]; with choices, each element is one of them (a set of options)
 // min/max are inclusive and apply to int, double and every component of vec3 and lists.
+//
+// Enum parameters are strings with choices. Their string table is declared once, in the node
+// file, as a Choices<E> that maps each string to the core enum: the declaration takes the names
+// (`.choices(kShapes)`) and the cook the enum (`c.param("primitive", kShapes)`), so core only
+// ever sees enums.
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <initializer_list>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -30,7 +38,7 @@ class Hasher;
 
 using Vec3Param = std::array<double, 3>;
 
-enum class ParamKind { Bool, Int, Double, String, Vec3, Vec3List, DoubleList };
+enum class ParamKind { Bool, Int, Double, String, Vec3, Vec3List, DoubleList, StringList };
 
 /// How an editor should present a parameter. InputFile / OutputFile also select how the engine
 /// resolves relative paths.
@@ -47,15 +55,16 @@ enum class UiHint {
 };
 
 /// Alternative index == static_cast<int>(ParamKind).
-using ParamValue = std::variant<bool, std::int64_t, double, std::string, Vec3Param,
-                                std::vector<Vec3Param>, std::vector<double>>;
+using ParamValue =
+    std::variant<bool, std::int64_t, double, std::string, Vec3Param, std::vector<Vec3Param>,
+                 std::vector<double>, std::vector<std::string>>;
 
 struct ParamDecl {
   std::string name;
   ParamKind kind = ParamKind::Double;
   ParamValue defaultValue;
   std::optional<double> min, max;    ///< inclusive
-  std::vector<std::string> choices;  ///< string kind only: the allowed values (an enum)
+  std::vector<std::string> choices;  ///< string (an enum) and string list: the allowed values
   std::optional<std::size_t> size;   ///< double list: exact number of values
   std::size_t minSize = 0;           ///< lists: fewest elements
   std::string doc;                   ///< one or two sentences for `tfd nodes` and tooltips
@@ -99,9 +108,42 @@ ParamValue paramFromText(const ParamDecl& decl, std::string_view text);
 std::string formatParamValue(const ParamValue& value);
 void hashParamValue(Hasher& hasher, const ParamValue& value);
 
+namespace detail {
+[[noreturn]] void unknownChoice(std::string_view name);
+}  // namespace detail
+
+/// The string table of an enum parameter: each allowed string with its enum value, in the order
+/// users see them (the first is the default unless the declaration says otherwise).
+template <class E>
+class Choices {
+ public:
+  Choices(std::initializer_list<std::pair<const char*, E>> entries)
+      : entries_(entries.begin(), entries.end()) {}
+  std::vector<std::string> names() const {
+    std::vector<std::string> out;
+    for (const auto& [name, value] : entries_) out.emplace_back(name);
+    return out;
+  }
+  /// The enum of a validated string; throws GraphError for a string not in the table.
+  E value(std::string_view name) const {
+    for (const auto& [n, v] : entries_)
+      if (name == n) return v;
+    detail::unknownChoice(name);
+  }
+  /// The string of an enum value (the first listed when several map to it).
+  const char* name(E value) const {
+    for (const auto& [n, v] : entries_)
+      if (v == value) return n;
+    return "";
+  }
+
+ private:
+  std::vector<std::pair<const char*, E>> entries_;
+};
+
 /// Maps a C++ type to a parameter kind for NodeDecl::param<T> and CookContext::param<T>.
 /// Supported: bool, int, std::int64_t, double, std::string, Vec3Param,
-/// std::vector<Vec3Param>, std::vector<double>.
+/// std::vector<Vec3Param>, std::vector<double>, std::vector<std::string>.
 template <class T>
 struct ParamTraits;
 
@@ -160,6 +202,15 @@ struct ParamTraits<std::vector<double>> {
   static ParamValue toValue(std::vector<double> v) { return v; }
   static std::vector<double> fromValue(const ParamValue& v) {
     return std::get<std::vector<double>>(v);
+  }
+};
+
+template <>
+struct ParamTraits<std::vector<std::string>> {
+  static constexpr ParamKind kind = ParamKind::StringList;
+  static ParamValue toValue(std::vector<std::string> v) { return v; }
+  static std::vector<std::string> fromValue(const ParamValue& v) {
+    return std::get<std::vector<std::string>>(v);
   }
 };
 

@@ -42,6 +42,8 @@ std::string withoutPrefix(std::string message) {
 }  // namespace
 
 PatternBlocks defaultPatternBlocks(DegeneratePattern pattern) {
+  if (pattern == DegeneratePattern::Transition)
+    throw Error("degenerate curve element: the pattern must be wedge or trisector");
   PatternBlocks b;
   b.tx << 1, 0, 0, -1;
   const double s = pattern == DegeneratePattern::Wedge ? 1 : -1;
@@ -121,24 +123,6 @@ CurveElement buildCurveElement(const CurveOptions& options, CurveBuildReport* re
     report->holonomyDegrees = frames.holonomy * 180 / std::numbers::pi;
   }
   return curve;
-}
-
-CurveKind parseCurveKind(std::string_view text) {
-  if (text == "tensor") return CurveKind::Tensor;
-  if (text == "degenerate") return CurveKind::Degenerate;
-  throw Error("kind: expected \"tensor\" or \"degenerate\", got \"" + std::string(text) + "\"");
-}
-
-DegenerateType parseDegenerateType(std::string_view text) {
-  if (text == "linear") return DegenerateType::Linear;
-  if (text == "planar") return DegenerateType::Planar;
-  throw Error("type: expected \"linear\" or \"planar\", got \"" + std::string(text) + "\"");
-}
-
-DegeneratePattern parseDegeneratePattern(std::string_view text) {
-  if (text == "wedge") return DegeneratePattern::Wedge;
-  if (text == "trisector") return DegeneratePattern::Trisector;
-  throw Error("pattern: expected \"wedge\" or \"trisector\", got \"" + std::string(text) + "\"");
 }
 
 }  // namespace tfd::core

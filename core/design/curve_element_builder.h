@@ -84,10 +84,4 @@ struct CurveBuildReport {
 /// is neither a wedge nor a trisector (δ = 0).
 CurveElement buildCurveElement(const CurveOptions& options, CurveBuildReport* report = nullptr);
 
-/// Parameter parsing for nodes: "tensor"/"degenerate", "linear"/"planar", "wedge"/"trisector".
-/// Throw core::Error naming the parameter and the accepted values.
-CurveKind parseCurveKind(std::string_view text);
-DegenerateType parseDegenerateType(std::string_view text);
-DegeneratePattern parseDegeneratePattern(std::string_view text);
-
 }  // namespace tfd::core

@@ -49,6 +49,8 @@ LocalLinearization makeDegenerateLinearization(const Vec3& origin, const Mat3& f
                                                DegenerateType type, DegeneratePattern pattern) {
   checkFrame(frame, "degenerate design element");
   if (!origin.allFinite()) throw Error("degenerate design element: position is not finite");
+  if (pattern == DegeneratePattern::Transition)
+    throw Error("degenerate design element: the pattern must be wedge or trisector");
   LocalLinearization result;
   result.origin = origin;
   result.frame = frame;

@@ -4,22 +4,20 @@
 #include <array>
 #include <vector>
 
+#include "core/degeneracy.h"
 #include "core/tensor.h"
 
 namespace tfd::core {
-
-enum class DegenerateType { Linear, Planar };
-enum class DegeneratePattern { Wedge, Trisector };
 
 /// A local linearisation in a frame: value(p) = R (T0 + Σ_i d_i T_i) Rᵀ with d = Rᵀ(p − origin).
 /// The frame's third column is the non-degenerate eigenvector of a degenerate element (the 2x2
 /// blocks of T_x, T_y act on the degenerate plane spanned by the first two columns, Eq. 3).
 struct LocalLinearization {
   Vec3 origin = Vec3::Zero();
-  Mat3 frame = Mat3::Identity();               ///< columns: local x, y, z axes (orthonormal)
-  Tensor value;                                ///< T0, in local coordinates
-  std::array<Tensor, 3> jacobian{};            ///< T_x, T_y, T_z, in local coordinates
-  Tensor evaluate(const Vec3& p) const;        ///< world-space tensor at p (traceless part)
+  Mat3 frame = Mat3::Identity();         ///< columns: local x, y, z axes (orthonormal)
+  Tensor value;                          ///< T0, in local coordinates
+  std::array<Tensor, 3> jacobian{};      ///< T_x, T_y, T_z, in local coordinates
+  Tensor evaluate(const Vec3& p) const;  ///< world-space tensor at p (traceless part)
 };
 
 /// A point design element applied to the vertices of the tet that holds it, or to every vertex

@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "core/error.h"
-#include "core/region/curve_tube.h"
+#include "core/region/vertex_selection.h"
 #include "core/topology/extract_degenerate_curves.h"
 
 namespace tfd::core {
@@ -39,38 +39,23 @@ std::string LocalSmoothReport::summary() const {
   return s.str();
 }
 
-SmoothRegionShape parseSmoothRegionShape(std::string_view text) {
-  if (text == "sphere") return SmoothRegionShape::Sphere;
-  if (text == "box") return SmoothRegionShape::Box;
-  if (text == "curve") return SmoothRegionShape::Curve;
-  throw Error("region: expected \"sphere\", \"box\" or \"curve\", got \"" + std::string(text) +
-              "\"");
-}
-
 std::vector<int> smoothRegionVertices(const TensorField& field, const LocalSmoothOptions& options,
                                       double* pickDistance, const Progress& progress) {
   const TetMesh& mesh = field.mesh();
-  const auto& pos = mesh.positions();
   std::vector<int> region;
   std::ostringstream what;
   switch (options.region) {
     case SmoothRegionShape::Sphere: {
       if (!options.center.allFinite()) throw Error("center: not finite");
       checkPositive(options.radius, "radius");
-      const double r2 = options.radius * options.radius;
-      for (int v = 0; v < static_cast<int>(pos.size()); ++v) {
-        if ((pos[v] - options.center).squaredNorm() <= r2) region.push_back(v);
-      }
+      region = verticesInSphere(mesh, options.center, options.radius);
       what << "the sphere at " << format(options.center) << " radius " << options.radius;
       break;
     }
     case SmoothRegionShape::Box: {
       if (!options.center.allFinite()) throw Error("center: not finite");
       for (int a = 0; a < 3; ++a) checkPositive(options.size[a], "size");
-      const Vec3 half = 0.5 * options.size;
-      for (int v = 0; v < static_cast<int>(pos.size()); ++v) {
-        if (((pos[v] - options.center).cwiseAbs() - half).maxCoeff() <= 0) region.push_back(v);
-      }
+      region = verticesInBox(mesh, options.center, options.size);
       what << "the box at " << format(options.center) << " size " << format(options.size);
       break;
     }
@@ -175,15 +160,7 @@ std::vector<int> curveRegion(const TensorField& field, const LocalSmoothOptions&
     throw Error("pick: the field has no degenerate curve to pick near " + format(options.pick));
   }
   if (pickDistance) *pickDistance = picked->distance;
-  const DegenerateCurve& curve = curves->curve(picked->curveId);
-  std::vector<Vec3> polyline = curve.points;
-  bool closed = curve.closed && polyline.size() >= 3;
-  if (polyline.size() == 1) polyline.push_back(polyline.front());  // a ball around one point
-  const TubeQuery tube = findTubeVertices(field.mesh(), polyline, closed, options.radius);
-  std::vector<int> region;
-  region.reserve(tube.vertices.size());
-  for (const TubeVertex& v : tube.vertices) region.push_back(v.vertex);
-  return region;
+  return verticesAroundCurve(field.mesh(), curves->curve(picked->curveId), options.radius);
 }
 
 }  // namespace

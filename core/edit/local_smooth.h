@@ -69,6 +69,4 @@ std::vector<int> smoothRegionVertices(const TensorField& field, const LocalSmoot
 LocalSmoothResult smoothVertices(const TensorField& field, const std::vector<int>& region,
                                  const SolverOptions& solver = {}, const Progress& progress = {});
 
-SmoothRegionShape parseSmoothRegionShape(std::string_view text);
-
 }  // namespace tfd::core

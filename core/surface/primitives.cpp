@@ -99,17 +99,6 @@ SurfaceMesh geodesicSphere(double radius, int n) {
 
 }  // namespace
 
-PrimitiveShape parsePrimitiveShape(std::string_view name) {
-  if (name == "sphere") return PrimitiveShape::Sphere;
-  if (name == "box" || name == "cube") return PrimitiveShape::Box;
-  if (name == "torus") return PrimitiveShape::Torus;
-  if (name == "double_torus" || name == "doubletorus" || name == "genus2") {
-    return PrimitiveShape::DoubleTorus;
-  }
-  throw Error("unknown primitive '" + std::string(name) +
-              "': expected sphere, box, torus or double_torus");
-}
-
 std::string primitiveShapeName(PrimitiveShape shape) {
   return primitiveShapeNames()[static_cast<int>(shape)];
 }

@@ -22,9 +22,7 @@ struct PrimitiveSpec {
   double minorRadius = 0.4;   ///< tori: tube radius, < majorRadius
 };
 
-/// "sphere", "box", "torus", "double_torus" (also "doubletorus", "genus2").
-/// Throws core::Error listing the valid names.
-PrimitiveShape parsePrimitiveShape(std::string_view name);
+/// "sphere", "box", "torus", "double_torus", for messages and test names.
 std::string primitiveShapeName(PrimitiveShape shape);
 /// Canonical names, in enum order.
 std::vector<std::string> primitiveShapeNames();

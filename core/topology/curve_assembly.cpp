@@ -10,16 +10,16 @@ struct Step {
   bool forward;  ///< traversed from `from` to `to`
 };
 
-PointPattern patternOf(double cosine) {
-  if (cosine > 0) return PointPattern::Wedge;
-  if (cosine < 0) return PointPattern::Trisector;
-  return PointPattern::Transition;
+DegeneratePattern patternOf(double cosine) {
+  if (cosine > 0) return DegeneratePattern::Wedge;
+  if (cosine < 0) return DegeneratePattern::Trisector;
+  return DegeneratePattern::Transition;
 }
 
-PointPattern combine(double arriving, double leaving) {
-  if (arriving > 0 && leaving > 0) return PointPattern::Wedge;
-  if (arriving < 0 && leaving < 0) return PointPattern::Trisector;
-  return PointPattern::Transition;  // δ changes sign across the face (or vanishes there)
+DegeneratePattern combine(double arriving, double leaving) {
+  if (arriving > 0 && leaving > 0) return DegeneratePattern::Wedge;
+  if (arriving < 0 && leaving < 0) return DegeneratePattern::Trisector;
+  return DegeneratePattern::Transition;  // δ changes sign across the face (or vanishes there)
 }
 
 }  // namespace
@@ -69,7 +69,7 @@ AssemblyResult assembleCurves(const std::vector<CurveNode>& nodes,
       const CurveNode& node = nodes[chain[i]];
       const Step* arriving = i > 0 ? &steps[i - 1] : (closed ? &steps.back() : nullptr);
       const Step* leaving = i < steps.size() ? &steps[i] : nullptr;
-      PointPattern pattern;
+      DegeneratePattern pattern;
       Vec3 tangent = Vec3::Zero();
       if (arriving && leaving) {
         pattern = combine(endCosine(*arriving), startCosine(*leaving));
@@ -94,13 +94,13 @@ AssemblyResult assembleCurves(const std::vector<CurveNode>& nodes,
       for (std::size_t k = 0; k < interior.size(); ++k) {
         const ArcPoint& p = leaving->forward ? interior[k] : interior[interior.size() - 1 - k];
         c.points.push_back(p.position);
-        c.patterns.push_back(p.transition ? PointPattern::Transition : patternOf(p.cosine));
+        c.patterns.push_back(p.transition ? DegeneratePattern::Transition : patternOf(p.cosine));
         c.tangents.push_back(leaving->forward ? p.tangent : Vec3(-p.tangent));
         c.eigenvectors.push_back(p.eigenvector);
         c.sources.push_back({PointSource::Kind::Tet, seg.tet});
       }
     }
-    c.type = linear >= planar ? CurveType::Linear : CurveType::Planar;
+    c.type = linear >= planar ? DegenerateType::Linear : DegenerateType::Planar;
     if (linear > 0 && planar > 0) ++result.mixedTypeCurves;
     if (!closed) {
       if (!nodes[chain.front()].onBoundary) ++result.danglingEnds;

@@ -66,20 +66,6 @@ void canonicalise(DegenerateCurve& c, const LexLess& lexLess) {
 
 }  // namespace
 
-const char* toString(CurveType type) { return type == CurveType::Linear ? "linear" : "planar"; }
-
-const char* toString(PointPattern pattern) {
-  switch (pattern) {
-    case PointPattern::Wedge:
-      return "wedge";
-    case PointPattern::Trisector:
-      return "trisector";
-    case PointPattern::Transition:
-      return "transition";
-  }
-  return "unknown";
-}
-
 double DegenerateCurve::length() const {
   double total = 0;
   const std::size_t n = points.size();
@@ -128,13 +114,13 @@ DegenerateCurves::DegenerateCurves(std::vector<DegenerateCurve> curves,
     const DegenerateCurve& c = curves_[i];
     curves_[i].id = int(i);
     ++statistics_.curves;
-    ++(c.type == CurveType::Linear ? statistics_.linear : statistics_.planar);
+    ++(c.type == DegenerateType::Linear ? statistics_.linear : statistics_.planar);
     ++(c.closed ? statistics_.closed : statistics_.open);
     statistics_.points += int(c.points.size());
-    for (PointPattern p : c.patterns) {
-      if (p == PointPattern::Wedge)
+    for (DegeneratePattern p : c.patterns) {
+      if (p == DegeneratePattern::Wedge)
         ++statistics_.wedgePoints;
-      else if (p == PointPattern::Trisector)
+      else if (p == DegeneratePattern::Trisector)
         ++statistics_.trisectorPoints;
       else
         ++statistics_.transitionPoints;
@@ -201,19 +187,10 @@ std::size_t DegenerateCurves::byteSize() const {
   std::size_t bytes = sizeof(*this);
   for (const DegenerateCurve& c : curves_) {
     bytes += sizeof(c) +
-             c.points.size() * (3 * sizeof(Vec3) + sizeof(PointPattern) + sizeof(PointSource));
+             c.points.size() * (3 * sizeof(Vec3) + sizeof(DegeneratePattern) + sizeof(PointSource));
   }
   for (const std::string& w : warnings_) bytes += sizeof(w) + w.size();
   return bytes;
-}
-
-std::array<std::uint8_t, 3> fig5Colour(CurveType type, PointPattern pattern) {
-  if (pattern == PointPattern::Transition) return {255, 255, 255};
-  if (type == CurveType::Linear)
-    return pattern == PointPattern::Wedge ? std::array<std::uint8_t, 3>{0, 200, 0}
-                                          : std::array<std::uint8_t, 3>{0, 80, 255};
-  return pattern == PointPattern::Wedge ? std::array<std::uint8_t, 3>{255, 220, 0}
-                                        : std::array<std::uint8_t, 3>{230, 0, 0};
 }
 
 }  // namespace tfd::core

@@ -10,17 +10,10 @@
 #include <string>
 #include <vector>
 
+#include "core/degeneracy.h"
 #include "core/tensor.h"
 
 namespace tfd::core {
-
-/// L-type (the non-degenerate eigenvalue is the major one) or P-type (the minor one).
-enum class CurveType { Linear, Planar };
-/// 2-D pattern of the field projected on the degenerate plane at a curve point: wedge (index
-/// +½), trisector (−½), or a transition point between the two (tangent ⊥ eigenvector).
-enum class PointPattern { Wedge, Trisector, Transition };
-const char* toString(CurveType type);        ///< "linear" / "planar"
-const char* toString(PointPattern pattern);  ///< "wedge" / "trisector" / "transition"
 
 /// Where a curve point came from: a mesh face (the usual case), an edge or a vertex (points
 /// canonicalised so that all cells around them share them), or the inside of a tet (transition
@@ -34,13 +27,13 @@ struct PointSource {
 
 struct DegenerateCurve {
   int id = 0;  ///< index in DegenerateCurves::curves(); stable for a given field
-  CurveType type = CurveType::Linear;
+  DegenerateType type = DegenerateType::Linear;
   bool closed = false;  ///< a loop; the first point is not repeated at the end
   std::vector<Vec3> points;
-  std::vector<PointPattern> patterns;  ///< one per point
-  std::vector<Vec3> tangents;          ///< unit, pointing along increasing point index
-  std::vector<Vec3> eigenvectors;      ///< unit non-degenerate eigenvector (sign arbitrary)
-  std::vector<PointSource> sources;    ///< one per point
+  std::vector<DegeneratePattern> patterns;  ///< one per point
+  std::vector<Vec3> tangents;               ///< unit, pointing along increasing point index
+  std::vector<Vec3> eigenvectors;           ///< unit non-degenerate eigenvector (sign arbitrary)
+  std::vector<PointSource> sources;         ///< one per point
   double length() const;
   std::size_t segmentCount() const {
     return points.size() < 2 ? 0 : (closed ? points.size() : points.size() - 1);
@@ -117,9 +110,5 @@ class DegenerateCurves {
   CurveStatistics statistics_;
   ExtractionDiagnostics diagnostics_;
 };
-
-/// The paper's Fig. 5 colour code (§4): L-wedge green, L-trisector blue, P-wedge yellow,
-/// P-trisector red; transition points white. RGB, 0–255.
-std::array<std::uint8_t, 3> fig5Colour(CurveType type, PointPattern pattern);
 
 }  // namespace tfd::core

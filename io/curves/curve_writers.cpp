@@ -14,9 +14,9 @@
 namespace tfd::io {
 namespace {
 
-using core::CurveType;
 using core::DegenerateCurves;
-using core::PointPattern;
+using core::DegeneratePattern;
+using core::DegenerateType;
 
 void writeText(const std::filesystem::path& path, const std::string& text) {
   writeAtomically(path, [&](OutputFile& out) { out.write(text.data(), text.size()); });
@@ -29,8 +29,8 @@ void appendNumber(std::string& s, double v) {
   s.append(buffer, r.ptr);
 }
 
-int patternCode(PointPattern p) {
-  return p == PointPattern::Wedge ? 1 : p == PointPattern::Trisector ? -1 : 0;
+int patternCode(DegeneratePattern p) {
+  return p == DegeneratePattern::Wedge ? 1 : p == DegeneratePattern::Trisector ? -1 : 0;
 }
 
 }  // namespace
@@ -49,7 +49,7 @@ void writeCurvesJson(const std::filesystem::path& path, const DegenerateCurves& 
     for (const core::Vec3& p : c.points) points.push_back({p.x(), p.y(), p.z()});
     j["points"] = std::move(points);
     nlohmann::ordered_json pattern = nlohmann::ordered_json::array();
-    for (PointPattern p : c.patterns) pattern.push_back(core::toString(p));
+    for (DegeneratePattern p : c.patterns) pattern.push_back(core::toString(p));
     j["pattern"] = std::move(pattern);
     list.push_back(std::move(j));
   }
@@ -72,7 +72,7 @@ void writeCurvesVtp(const std::filesystem::path& path, const DegenerateCurves& c
         tangents.push_back(c.tangents[i][k]);
         eigenvectors.push_back(c.eigenvectors[i][k]);
       }
-      type.push_back(c.type == CurveType::Linear ? 1 : -1);
+      type.push_back(c.type == DegenerateType::Linear ? 1 : -1);
       pattern.push_back(patternCode(c.patterns[i]));
       for (std::uint8_t v : core::fig5Colour(c.type, c.patterns[i])) colour.push_back(v);
       pointCurve.push_back(c.id);
@@ -81,7 +81,7 @@ void writeCurvesVtp(const std::filesystem::path& path, const DegenerateCurves& c
     if (c.closed && n > 1) connectivity.push_back(base);
     offsets.push_back(std::int64_t(connectivity.size()));
     cellCurve.push_back(c.id);
-    cellType.push_back(c.type == CurveType::Linear ? 1 : -1);
+    cellType.push_back(c.type == DegenerateType::Linear ? 1 : -1);
     closed.push_back(c.closed ? 1 : 0);
     base += std::int64_t(n);
   }

@@ -189,9 +189,9 @@ std::shared_ptr<const core::TetMesh> meshPrimitive(const core::PrimitiveSpec& sp
   return tetrahedralize(surface, options, progress);
 }
 
-std::shared_ptr<const core::TetMesh> meshPrimitive(std::string_view shape, double targetTets) {
+std::shared_ptr<const core::TetMesh> meshPrimitive(core::PrimitiveShape shape, double targetTets) {
   core::PrimitiveSpec spec;
-  spec.shape = core::parsePrimitiveShape(shape);
+  spec.shape = shape;
   return meshPrimitive(spec, targetTets);
 }
 

@@ -74,8 +74,8 @@ std::shared_ptr<const core::TetMesh> tetrahedralize(const core::SurfaceMesh& sur
 std::shared_ptr<const core::TetMesh> meshPrimitive(const core::PrimitiveSpec& spec,
                                                    double targetTets,
                                                    const core::Progress& progress = {});
-/// The same with default dimensions, by name: "sphere" (radius 1), "box" (2 × 2 × 2),
-/// "torus" and "double_torus" (R = 1, r = 0.4), e.g. meshPrimitive("sphere", 500'000).
-std::shared_ptr<const core::TetMesh> meshPrimitive(std::string_view shape, double targetTets);
+/// The same with default dimensions: a sphere of radius 1, a 2 × 2 × 2 box, tori with R = 1,
+/// r = 0.4; e.g. meshPrimitive(core::PrimitiveShape::Sphere, 500'000).
+std::shared_ptr<const core::TetMesh> meshPrimitive(core::PrimitiveShape shape, double targetTets);
 
 }  // namespace tfd::io

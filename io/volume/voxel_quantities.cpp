@@ -21,38 +21,6 @@ VoxelScalarFunction interpolateVertexScalars(std::shared_ptr<const core::TetMesh
   };
 }
 
-VoxelQuantities VoxelQuantities::fromNames(const std::vector<std::string>& names,
-                                           VoxelScalarFunction density) {
-  if (names.empty()) {
-    throw core::Error(
-        "no quantity selected (choose from tensor, eigenvalues, eigenvectors, density)");
-  }
-  VoxelQuantities q;
-  q.tensor = false;
-  bool seenDensity = false;
-  for (const auto& name : names) {
-    bool* flag = nullptr;
-    if (name == "tensor") flag = &q.tensor;
-    if (name == "eigenvalues") flag = &q.eigenvalues;
-    if (name == "eigenvectors") flag = &q.eigenvectors;
-    const bool isDensity = name == "density";
-    if (!flag && !isDensity) {
-      throw core::Error("unknown quantity '" + name +
-                        "' (choose from tensor, eigenvalues, eigenvectors, density)");
-    }
-    if ((flag && *flag) || (isDensity && seenDensity)) {
-      throw core::Error("quantity '" + name + "' is listed twice");
-    }
-    if (flag) *flag = true;
-    seenDensity = seenDensity || isDensity;
-  }
-  if (seenDensity) {
-    if (!density) throw core::Error("quantity 'density' needs a density source");
-    q.density = std::move(density);
-  }
-  return q;
-}
-
 int VoxelQuantities::channelCount() const {
   return (tensor ? 6 : 0) + (eigenvalues ? 3 : 0) + (eigenvectors ? 9 : 0) + (density ? 1 : 0);
 }

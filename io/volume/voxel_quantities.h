@@ -29,12 +29,6 @@ struct VoxelQuantities {
   bool eigenvectors = false;  ///< unit e1, e2, e3; their sign is arbitrary (line fields)
   VoxelScalarFunction density;  ///< written as a scalar "density" when set
 
-  /// From the names "tensor", "eigenvalues", "eigenvectors", "density" (any order, at least
-  /// one). Throws core::Error naming an unknown or repeated name, or "density" without a
-  /// density function.
-  static VoxelQuantities fromNames(const std::vector<std::string>& names,
-                                   VoxelScalarFunction density = {});
-
   /// Number of floats evaluate() writes: 6 + 3 + 9 + 1 for everything.
   int channelCount() const;
   /// Channel names in evaluate() order, given the tensor's name (e.g. "T"):

@@ -1,13 +1,23 @@
 // CurveConstraint: design elements along a sketched curve, applied in a tube around it
 // (paper §5, "Design" and "Parameterization").
-#include "core/design/curve_element_builder.h"
+#include <optional>
 
+#include "core/design/curve_element_builder.h"
 #include "graph/node_registry.h"
+#include "nodes/design/degeneracy_choices.h"
 #include "nodes/node_support.h"
 #include "nodes/value_types.h"
 
 namespace tfd::nodes {
 namespace {
+
+const graph::Choices<core::CurveKind> kCurveKinds{{"degenerate", core::CurveKind::Degenerate},
+                                                  {"tensor", core::CurveKind::Tensor}};
+/// A design pattern, or no value for custom 2x2 blocks.
+const graph::Choices<std::optional<core::DegeneratePattern>> kCurvePatterns{
+    {"wedge", core::DegeneratePattern::Wedge},
+    {"trisector", core::DegeneratePattern::Trisector},
+    {"custom", std::nullopt}};
 
 void declare(graph::NodeDecl& d) {
   d.doc(
@@ -26,15 +36,15 @@ void declare(graph::NodeDecl& d) {
   d.param<double>("spacing").byDefault(0.05).min(1e-9).doc(
       "Distance between samples along the spline (adjusted to divide its length).");
   d.param<std::string>("kind")
-      .choices({"degenerate", "tensor"})
+      .choices(kCurveKinds)
       .doc(
           "degenerate: a degenerate curve with a pattern; tensor: non-degenerate values whose "
           "eigenvectors follow the frame.");
   d.param<std::string>("type")
-      .choices({"linear", "planar"})
+      .choices(kDegenerateTypeChoices)
       .doc("kind degenerate: linear (eigenvalues 2,-1,-1) or planar (1,1,-2) along the tangent.");
   d.param<std::string>("pattern")
-      .choices({"wedge", "trisector", "custom"})
+      .choices(kCurvePatterns)
       .doc("kind degenerate: the 2D pattern in the degenerate plane (Eq. 3), or custom blocks.");
   d.param<std::vector<double>>("pattern_tx")
       .size(3)
@@ -69,14 +79,13 @@ void cook(graph::CookContext& c) {
     o.points.push_back(toVec3(p));
   o.closed = c.param<bool>("closed");
   o.spacing = c.param<double>("spacing");
-  o.kind = core::parseCurveKind(c.param<std::string>("kind"));
-  o.type = core::parseDegenerateType(c.param<std::string>("type"));
-  const std::string pattern = c.param<std::string>("pattern");
-  if (pattern == "custom") {
+  o.kind = c.param("kind", kCurveKinds);
+  o.type = c.param("type", kDegenerateTypeChoices);
+  if (const auto pattern = c.param("pattern", kCurvePatterns)) {
+    o.pattern = *pattern;
+  } else {
     o.customPattern = blocks(c.param<std::vector<double>>("pattern_tx"),
                              c.param<std::vector<double>>("pattern_ty"));
-  } else {
-    o.pattern = core::parseDegeneratePattern(pattern);
   }
   const auto e = c.param<std::vector<double>>("eigenvalues");
   o.eigenvalues = core::Vec3(e[0], e[1], e[2]);

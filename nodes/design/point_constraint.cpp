@@ -4,6 +4,7 @@
 #include "core/design/design_element.h"
 
 #include "graph/node_registry.h"
+#include "nodes/design/degeneracy_choices.h"
 #include "nodes/node_support.h"
 #include "nodes/value_types.h"
 
@@ -32,12 +33,12 @@ void declare(graph::NodeDecl& d) {
       .byDefault({1, -0.25, -0.75})
       .doc("kind tensor: eigenvalues along the frame's x, y, z axes (traceless part used).");
   d.param<std::string>("type")
-      .choices({"linear", "planar"})
+      .choices(kDegenerateTypeChoices)
       .doc(
           "kind degenerate: linear (eigenvalues 2,-1,-1) or planar (1,1,-2); the "
           "non-degenerate eigenvector is the frame's z axis.");
   d.param<std::string>("pattern")
-      .choices({"wedge", "trisector"})
+      .choices(kDesignPatternChoices)
       .doc(
           "kind degenerate: the 2D pattern in the degenerate plane (Eq. 3; trisector negates Ty).");
   d.param<graph::Vec3Param>("rotation")
@@ -54,12 +55,9 @@ void cook(graph::CookContext& c) {
   element.radius = c.param<double>("radius");
   if (c.param<std::string>("kind") == "degenerate") {
     element.degenerate = true;
-    element.field = core::makeDegenerateLinearization(
-        position, frame,
-        c.param<std::string>("type") == "linear" ? core::DegenerateType::Linear
-                                                 : core::DegenerateType::Planar,
-        c.param<std::string>("pattern") == "wedge" ? core::DegeneratePattern::Wedge
-                                                   : core::DegeneratePattern::Trisector);
+    element.field =
+        core::makeDegenerateLinearization(position, frame, c.param("type", kDegenerateTypeChoices),
+                                          c.param("pattern", kDesignPatternChoices));
   } else {
     const auto t = c.param<std::vector<double>>("tensor");
     const bool explicitTensor = std::any_of(t.begin(), t.end(), [](double v) { return v != 0; });

@@ -9,6 +9,11 @@
 namespace tfd::nodes {
 namespace {
 
+const graph::Choices<core::SmoothRegionShape> kRegionShapes{
+    {"sphere", core::SmoothRegionShape::Sphere},
+    {"box", core::SmoothRegionShape::Box},
+    {"curve", core::SmoothRegionShape::Curve}};
+
 void declare(graph::NodeDecl& d) {
   d.doc(
        "Smooths the field inside a region: a sphere, a box, or the tube around the "
@@ -23,7 +28,7 @@ void declare(graph::NodeDecl& d) {
       "they are extracted here).");
   d.output<core::TensorField>("field").doc("The field, re-solved inside the region only.");
   d.param<std::string>("region")
-      .choices({"sphere", "box", "curve"})
+      .choices(kRegionShapes)
       .doc("sphere (center, radius), box (center, size) or curve (pick, radius).");
   d.param<graph::Vec3Param>("center")
       .hint(graph::UiHint::Position)
@@ -46,7 +51,7 @@ void declare(graph::NodeDecl& d) {
 
 void cook(graph::CookContext& c) {
   core::LocalSmoothOptions o;
-  o.region = core::parseSmoothRegionShape(c.param<std::string>("region"));
+  o.region = c.param("region", kRegionShapes);
   o.center = vec3Param(c, "center");
   o.radius = c.param<double>("radius");
   o.size = vec3Param(c, "size");

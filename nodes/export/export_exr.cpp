@@ -21,14 +21,16 @@ void declare(graph::NodeDecl& d) {
       .byDefault("slices/field.%04d.exr")
       .outputFile("*.exr")
       .doc("File pattern with one slice-number placeholder: %d, %04d or ####.");
-  declareVoxelParams(d, "quantity");
+  declareVoxelParams(d, "quantities");
+  // typeVersion 1 named the list `quantity`, a comma-separated string.
+  d.migration(1, [](graph::Json& p) { splitQuantityText(p, "quantity", "quantities"); });
 }
 
 void cook(graph::CookContext& c) {
   const auto field = c.input<core::TensorField>("field");
   io::ExrExportOptions o;
   o.voxelSize = voxelSizeOf(c, field->mesh());
-  o.quantities = quantitiesOf(c, "quantity");
+  o.quantities = quantitiesOf(c, "quantities");
   o.source = "node " + c.nodeName();
   const std::filesystem::path pattern = c.path("path");
   const io::VoxelExportStats stats =
@@ -39,6 +41,6 @@ void cook(graph::CookContext& c) {
 
 }  // namespace
 
-void registerExportExr(graph::NodeRegistry& r) { r.add("ExportEXR", 1, declare, cook); }
+void registerExportExr(graph::NodeRegistry& r) { r.add("ExportEXR", 2, declare, cook); }
 
 }  // namespace tfd::nodes

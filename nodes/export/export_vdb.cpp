@@ -19,6 +19,7 @@ void declare(graph::NodeDecl& d) {
   d.input<core::TensorField>("field");
   d.param<std::string>("path").byDefault("field.vdb").outputFile("*.vdb").doc("Output file.");
   declareVoxelParams(d, "quantities");
+  d.migration(1, [](graph::Json& p) { splitQuantityText(p, "quantities", "quantities"); });
 }
 
 void cook(graph::CookContext& c) {
@@ -35,6 +36,6 @@ void cook(graph::CookContext& c) {
 
 }  // namespace
 
-void registerExportVdb(graph::NodeRegistry& r) { r.add("ExportVDB", 1, declare, cook); }
+void registerExportVdb(graph::NodeRegistry& r) { r.add("ExportVDB", 2, declare, cook); }
 
 }  // namespace tfd::nodes

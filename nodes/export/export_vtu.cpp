@@ -1,5 +1,7 @@
 // ExportVTU: the field (and optionally the degenerate curves' Fig. 5 colours) for ParaView.
-#include "core/point_locator.h"
+#include <nlohmann/json.hpp>
+
+#include "core/topology/curve_tets.h"
 #include "io/vtk/vtu_writer.h"
 
 #include "graph/node_registry.h"
@@ -8,6 +10,10 @@
 
 namespace tfd::nodes {
 namespace {
+
+const graph::Choices<io::VtkEncoding> kEncodings{{"appended", io::VtkEncoding::Appended},
+                                                 {"base64", io::VtkEncoding::Base64},
+                                                 {"ascii", io::VtkEncoding::Ascii}};
 
 void declare(graph::NodeDecl& d) {
   d.doc(
@@ -24,43 +30,40 @@ void declare(graph::NodeDecl& d) {
       "Degenerate curves of this field (ExtractDegenerateCurves) to colour the tets.");
   d.param<std::string>("path").byDefault("field.vtu").outputFile("*.vtu").doc("Output file.");
   d.param<std::string>("encoding")
-      .choices({"binary", "base64", "ascii"})
+      .choices(kEncodings)
       .doc(
-          "binary: raw appended data (smallest, fastest); base64: inline binary; ascii: "
-          "readable text.");
+          "appended: raw appended binary data (smallest, fastest; VTK's word); base64: inline "
+          "base64 binary (what VTK calls \"binary\"); ascii: readable text.");
+  d.migration(1, [](graph::Json& params) {
+    // typeVersion 1 called raw appended data "binary"; VTK's own word is "appended".
+    if (params.contains("encoding") && params["encoding"] == "binary")
+      params["encoding"] = "appended";
+  });
 }
 
-io::VtkEncoding encodingOf(const std::string& name) {
-  if (name == "ascii") return io::VtkEncoding::Ascii;
-  if (name == "base64") return io::VtkEncoding::Base64;
-  return io::VtkEncoding::Appended;
-}
-
-/// Cell arrays marking the tets each curve point and segment midpoint lies in. Where several
-/// curves share a tet, the lower id wins (deterministic).
+/// Cell arrays marking the tets each curve segment passes through (core/topology/curve_tets.h)
+/// with the segment's Fig. 5 colour. Where several curves share a tet, the lower id wins.
 std::vector<io::NamedArray> curveCellArrays(const core::TetMesh& mesh,
                                             const core::DegenerateCurves& curves) {
   std::vector<double> ids(mesh.tetCount(), -1), colours(3 * mesh.tetCount(), 0);
-  auto mark = [&](const core::Vec3& p, int id, core::CurveType type, core::PointPattern pattern) {
-    const auto hit = mesh.locator().locate(p, 1e-9);
-    if (!hit || (ids[hit->tet] >= 0 && ids[hit->tet] <= id)) return;
-    ids[hit->tet] = id;
+  auto mark = [&](int tet, int id, core::DegenerateType type, core::DegeneratePattern pattern) {
+    if (tet < 0 || (ids[tet] >= 0 && ids[tet] <= id)) return;
+    ids[tet] = id;
     const auto rgb = core::fig5Colour(type, pattern);
-    for (int k = 0; k < 3; ++k) colours[3 * hit->tet + k] = rgb[k];
+    for (int k = 0; k < 3; ++k) colours[3 * tet + k] = rgb[k];
   };
+  using core::DegeneratePattern;
   for (const core::DegenerateCurve& curve : curves.curves()) {
+    const std::vector<int> tets = core::segmentTets(mesh, curve);
     const std::size_t n = curve.points.size();
-    for (std::size_t i = 0; i < n; ++i) {
-      mark(curve.points[i], curve.id, curve.type, curve.patterns[i]);
-      if (i + 1 < n || (curve.closed && n > 2)) {
-        const std::size_t j = (i + 1) % n;
-        const core::PointPattern midPattern =
-            curve.patterns[i] == curve.patterns[j]                ? curve.patterns[i]
-            : curve.patterns[i] == core::PointPattern::Transition ? curve.patterns[j]
-                                                                  : curve.patterns[i];
-        mark(0.5 * (curve.points[i] + curve.points[j]), curve.id, curve.type, midPattern);
-      }
+    for (std::size_t i = 0; i < tets.size(); ++i) {
+      // A segment's pattern is its ends' one; a transition end takes the other end's.
+      const DegeneratePattern a = curve.patterns[i], b = curve.patterns[(i + 1) % n];
+      mark(tets[i], curve.id, curve.type, a == DegeneratePattern::Transition ? b : a);
     }
+    if (n == 1)
+      for (int t : core::tetsOfSource(mesh, curve.sources[0]))
+        mark(t, curve.id, curve.type, curve.patterns[0]);
   }
   return {{"curve_id", 1, std::move(ids), io::VtkType::Int32},
           {"curve_colour", 3, std::move(colours), io::VtkType::UInt8}};
@@ -69,7 +72,7 @@ std::vector<io::NamedArray> curveCellArrays(const core::TetMesh& mesh,
 void cook(graph::CookContext& c) {
   const auto field = c.input<core::TensorField>("field");
   io::VtuFieldOptions o;
-  o.encoding = encodingOf(c.param<std::string>("encoding"));
+  o.encoding = c.param("encoding", kEncodings);
   if (const auto curves = c.inputOr<core::DegenerateCurves>("curves", nullptr)) {
     o.cellData = curveCellArrays(field->mesh(), *curves);
     std::size_t marked = 0;
@@ -86,6 +89,6 @@ void cook(graph::CookContext& c) {
 
 }  // namespace
 
-void registerExportVtu(graph::NodeRegistry& r) { r.add("ExportVTU", 1, declare, cook); }
+void registerExportVtu(graph::NodeRegistry& r) { r.add("ExportVTU", 2, declare, cook); }
 
 }  // namespace tfd::nodes

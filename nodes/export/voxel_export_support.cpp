@@ -1,5 +1,6 @@
 #include "nodes/export/voxel_export_support.h"
 
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "core/error.h"
@@ -11,11 +12,31 @@ void declareVoxelParams(graph::NodeDecl& d, const std::string& quantitiesName) {
       .byDefault(0)
       .min(0)
       .doc("World units per voxel; 0 picks the mesh's longest bounding-box side / 128.");
-  d.param<std::string>(quantitiesName)
-      .byDefault("tensor")
+  d.param<std::vector<std::string>>(quantitiesName)
+      .byDefault({"tensor"})
+      .choices(kVoxelQuantityChoices)
+      .minSize(1)
       .doc(
-          "Comma-separated: tensor (six components xx yy zz xy yz xz), eigenvalues "
-          "(l1 >= l2 >= l3), eigenvectors (e1 e2 e3, sign arbitrary).");
+          "Any of: tensor (six components xx yy zz xy yz xz), eigenvalues (l1 >= l2 >= l3), "
+          "eigenvectors (e1 e2 e3, sign arbitrary).");
+}
+
+void splitQuantityText(graph::Json& params, const std::string& from, const std::string& to) {
+  if (!params.contains(from)) return;
+  const graph::Json old = params[from];
+  params.erase(from);
+  if (!old.is_string()) {  // not what version 1 wrote: let validation report it
+    params[to] = old;
+    return;
+  }
+  graph::Json list = graph::Json::array();
+  std::stringstream text(old.get<std::string>());
+  for (std::string item; std::getline(text, item, ',');) {
+    const auto first = item.find_first_not_of(" \t");
+    if (first == std::string::npos) continue;
+    list.push_back(item.substr(first, item.find_last_not_of(" \t") - first + 1));
+  }
+  params[to] = list;
 }
 
 double voxelSizeOf(const graph::CookContext& c, const core::TetMesh& mesh) {
@@ -34,19 +55,13 @@ double voxelSizeOf(const graph::CookContext& c, const core::TetMesh& mesh) {
 }
 
 io::VoxelQuantities quantitiesOf(const graph::CookContext& c, const std::string& name) {
-  std::vector<std::string> names;
-  std::stringstream list(c.param<std::string>(name));
-  for (std::string item; std::getline(list, item, ',');) {
-    const auto first = item.find_first_not_of(" \t");
-    if (first == std::string::npos) continue;
-    names.push_back(item.substr(first, item.find_last_not_of(" \t") - first + 1));
+  io::VoxelQuantities q;
+  q.tensor = false;
+  for (bool io::VoxelQuantities::*flag : c.paramList(name, kVoxelQuantityChoices)) {
+    if (q.*flag) throw c.paramError(name, "a quantity is listed twice");
+    q.*flag = true;
   }
-  if (names.empty()) throw c.paramError(name, "name at least one quantity, e.g. \"tensor\"");
-  try {
-    return io::VoxelQuantities::fromNames(names);
-  } catch (const core::Error& e) {
-    throw c.paramError(name, e.what());
-  }
+  return q;
 }
 
 std::string voxelInfo(const std::string& what, const io::VoxelExportStats& stats) {

@@ -10,14 +10,23 @@
 
 namespace tfd::nodes {
 
-/// Declares `voxel_size` (0: automatic) and a comma-separated quantity list named `name`.
+/// The quantities a voxel export can write, as users name them.
+inline const graph::Choices<bool io::VoxelQuantities::*> kVoxelQuantityChoices{
+    {"tensor", &io::VoxelQuantities::tensor},
+    {"eigenvalues", &io::VoxelQuantities::eigenvalues},
+    {"eigenvectors", &io::VoxelQuantities::eigenvectors}};
+
+/// Declares `voxel_size` (0: automatic) and the quantity list named `quantitiesName`.
 void declareVoxelParams(graph::NodeDecl& d, const std::string& quantitiesName);
+
+/// Migration of typeVersion 1 parameters: the comma-separated string `from` ("tensor,
+/// eigenvalues") becomes the list `to` (["tensor", "eigenvalues"]).
+void splitQuantityText(graph::Json& params, const std::string& from, const std::string& to);
 
 /// `voxel_size`, or for 0 the mesh's longest bounding-box side / 128.
 double voxelSizeOf(const graph::CookContext& c, const core::TetMesh& mesh);
 
-/// The quantities named in the comma-separated list parameter `name` ("tensor, eigenvalues");
-/// errors name the parameter.
+/// The quantities of the list parameter `name`; a repeated one is an error naming it.
 io::VoxelQuantities quantitiesOf(const graph::CookContext& c, const std::string& name);
 
 /// "wrote PATH: NX x NY x NZ voxels of SIZE, N active".

@@ -1,12 +1,10 @@
 // TetMesh: the volume every field lives on, from a mesh file or a procedural solid
 // (paper §4 works on TetGen meshes).
-#include <cmath>
 #include <sstream>
 
-#include "core/surface/surface_check.h"
-#include "core/surface/surface_weld.h"
+#include "core/surface/primitives.h"
 #include "io/mesh_file.h"
-#include "io/tetgen/tetgen_mesher.h"
+#include "io/tetgen/surface_meshing.h"
 
 #include "graph/node_registry.h"
 #include "nodes/node_support.h"
@@ -14,6 +12,16 @@
 
 namespace tfd::nodes {
 namespace {
+
+const graph::Choices<core::PrimitiveShape> kPrimitives{
+    {"sphere", core::PrimitiveShape::Sphere},
+    {"box", core::PrimitiveShape::Box},
+    {"torus", core::PrimitiveShape::Torus},
+    {"double_torus", core::PrimitiveShape::DoubleTorus}};
+
+const graph::Choices<io::BoundaryMode> kBoundaryModes{{"auto", io::BoundaryMode::Auto},
+                                                      {"keep", io::BoundaryMode::Keep},
+                                                      {"refine", io::BoundaryMode::Refine}};
 
 void declare(graph::NodeDecl& d) {
   d.doc(
@@ -30,7 +38,7 @@ void declare(graph::NodeDecl& d) {
           "Surface mesh (.off .obj .ply .stl) or tet mesh (.node/.ele .msh .vtu); empty: "
           "use `primitive`.");
   d.param<std::string>("primitive")
-      .choices({"sphere", "box", "torus", "double_torus"})
+      .choices(kPrimitives)
       .doc("Procedural solid centred at the origin (tori lie in the xy plane).");
   d.param<double>("radius").byDefault(1).min(1e-9).doc("sphere: radius.");
   d.param<graph::Vec3Param>("size").byDefault({2, 2, 2}).min(1e-9).doc("box: edge lengths.");
@@ -63,7 +71,7 @@ void declare(graph::NodeDecl& d) {
           "30 s + 40 s per million target tets. (Some surfaces, e.g. with one vertex far "
           "away, keep TetGen's refinement from ending.)");
   d.param<std::string>("boundary")
-      .choices({"auto", "keep", "refine"})
+      .choices(kBoundaryModes)
       .doc(
           "keep: the surface triangles are the mesh boundary (TetGen -Y; the tet count then "
           "follows the surface's resolution); refine: TetGen may split them for quality and "
@@ -71,34 +79,23 @@ void declare(graph::NodeDecl& d) {
           "needs, refine coarser ones (e.g. CAD exports).");
 }
 
-/// Surface edges up to this factor above the target edge length count as fine enough to keep.
-constexpr double kKeepableEdgeRatio = 1.5;
-/// TetGen's volume-bound calibration without -Y (boundary refined too; see bench/RESULTS.md).
-constexpr double kRefineVolumeFactor = 2.5;
-
-io::TetgenOptions tetgenOptions(const graph::CookContext& c, const core::SurfaceMesh& surface,
-                                bool primitive, std::string source) {
-  io::TetgenOptions o;
-  o.targetTets = c.param<int>("target_tets");
-  o.quality = c.param<double>("quality");
-  if (o.quality != 0 && o.quality <= 1.1)
+io::SurfaceMeshingRequest meshingRequest(const graph::CookContext& c, bool procedural,
+                                         std::string source) {
+  io::SurfaceMeshingRequest r;
+  r.targetTets = c.param<int>("target_tets");
+  r.quality = c.param<double>("quality");
+  if (r.quality != 0 && r.quality <= 1.1)
     throw c.paramError("quality", "TetGen needs a radius-edge bound above 1.1 (or 0 for none)");
-  const std::string boundary = c.param<std::string>("boundary");
-  o.keepBoundary = boundary == "keep";
-  if (boundary == "auto") {
-    const double wanted =
-        core::edgeLengthForTargetTets(std::abs(core::enclosedVolume(surface)), o.targetTets);
-    o.keepBoundary = primitive || core::meanEdgeLength(surface) <= kKeepableEdgeRatio * wanted;
-  }
-  if (!o.keepBoundary) o.volumeFactor = kRefineVolumeFactor;
-  o.timeLimit = c.param<double>("time_limit");
-  o.source = std::move(source);
-  return o;
+  r.boundary = c.param("boundary", kBoundaryModes);
+  r.timeLimit = c.param<double>("time_limit");
+  r.procedural = procedural;
+  r.source = std::move(source);
+  return r;
 }
 
 core::PrimitiveSpec primitiveSpec(const graph::CookContext& c) {
   core::PrimitiveSpec spec;
-  spec.shape = core::parsePrimitiveShape(c.param<std::string>("primitive"));
+  spec.shape = c.param("primitive", kPrimitives);
   spec.radius = c.param<double>("radius");
   spec.size = vec3Param(c, "size");
   spec.majorRadius = c.param<double>("major_radius");
@@ -128,26 +125,25 @@ void cook(graph::CookContext& c) {
     progress.report(0, "surface");
     const core::SurfaceMesh surface = core::makePrimitiveForTets(spec, target);
     progress.report(0.1, "tetgen");
-    mesh = io::tetrahedralize(
-        surface, tetgenOptions(c, surface, true, c.param<std::string>("primitive")), progress);
+    mesh = io::meshSurface(surface, meshingRequest(c, true, c.param<std::string>("primitive")),
+                           nullptr, progress);
   } else if (io::isTetMeshFile(file)) {
     mesh = io::readTetMesh(file);
     c.info("tet mesh read as is: target_tets, quality and boundary do not apply");
   } else {
-    core::SurfaceMesh surface = io::readSurfaceMesh(file);
-    const core::WeldReport weld = core::weldCoincidentVertices(surface);
-    if (weld.mergedVertices > 0)
-      c.info("welded " + std::to_string(weld.mergedVertices) +
-             " vertices repeated at the same "
-             "position" +
-             (weld.droppedTriangles > 0
-                  ? ", dropped " + std::to_string(weld.droppedTriangles) + " degenerate triangles"
-                  : ""));
     progress.report(0.1, "tetgen");
-    const io::TetgenOptions o = tetgenOptions(c, surface, false, "file '" + file.string() + "'");
-    if (!o.keepBoundary)
+    io::SurfaceMeshingReport report;
+    mesh = io::meshSurface(io::readSurfaceMesh(file),
+                           meshingRequest(c, false, "file '" + file.string() + "'"), &report,
+                           progress);
+    if (report.weldedVertices > 0)
+      c.info("welded " + std::to_string(report.weldedVertices) +
+             " vertices repeated at the same position" +
+             (report.droppedTriangles > 0
+                  ? ", dropped " + std::to_string(report.droppedTriangles) + " degenerate triangles"
+                  : ""));
+    if (!report.boundaryKept)
       c.info("surface coarser than target_tets needs: TetGen refines the boundary too");
-    mesh = io::tetrahedralize(surface, o, progress);
   }
   c.info(describe(*mesh));
   c.setOutput("mesh", std::move(mesh));

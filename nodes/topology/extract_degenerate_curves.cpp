@@ -9,6 +9,9 @@
 namespace tfd::nodes {
 namespace {
 
+/// boundary_curves: whether curves hugging the boundary are dropped.
+const graph::Choices<bool> kBoundaryCurves{{"keep", false}, {"drop", true}};
+
 void declare(graph::NodeDecl& d) {
   d.doc(
        "Extracts the degenerate curves of the piecewise-linear field: degenerate points on "
@@ -31,7 +34,7 @@ void declare(graph::NodeDecl& d) {
           "Relative size of the deterministic perturbation that resolves non-generic faces "
           "(e.g. fields whose off-diagonal blocks vanish); 0 switches it off.");
   d.param<std::string>("boundary_curves")
-      .choices({"keep", "drop"})
+      .choices(kBoundaryCurves)
       .doc(
           "Curves that hug the boundary (every point within the first layer of tets): a "
           "boundary-conforming field (Propagate) has many short ones, as its normal "
@@ -53,7 +56,7 @@ void cook(graph::CookContext& c) {
   const int onBoundary = core::boundaryCurveCount(all, field->mesh());
   core::CurveFilter filter;
   filter.minLength = c.param<double>("min_length");
-  filter.dropBoundary = c.param<std::string>("boundary_curves") == "drop";
+  filter.dropBoundary = c.param("boundary_curves", kBoundaryCurves);
   auto curves = std::make_shared<const core::DegenerateCurves>(
       filter.minLength > 0 || filter.dropBoundary ? core::filterCurves(all, field->mesh(), filter)
                                                   : std::move(all));

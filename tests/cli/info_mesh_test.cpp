@@ -33,7 +33,7 @@ TEST(InfoMesh, ReportsCountsAndTopology) {
   EXPECT_TRUE(has(r.out, " " + std::to_string(surface.triangles.size()) + "\n")) << r.out;
   EXPECT_TRUE(has(r.out, "Euler characteristic 0 (genus 1)")) << r.out;
 
-  const auto mesh = io::meshPrimitive("double_torus", 3000);
+  const auto mesh = io::meshPrimitive(core::PrimitiveShape::DoubleTorus, 3000);
   const fs::path msh = dir / "dt.msh";
   io::writeTetMesh(msh, *mesh);
   r = runCli("info " + shellQuote(msh.string()));

@@ -62,7 +62,7 @@ TEST_F(MeshFile, EverySurfaceExtensionRoundTrips) {
 }
 
 TEST_F(MeshFile, EveryTetExtensionRoundTrips) {
-  const auto mesh = meshPrimitive("sphere", 2000);
+  const auto mesh = meshPrimitive(core::PrimitiveShape::Sphere, 2000);
   for (const char* ext : {".node", ".msh", ".vtu"}) {
     const fs::path p = dir_ / (std::string("t") + ext);
     writeTetMesh(p, *mesh);
@@ -80,7 +80,7 @@ TEST_F(MeshFile, FormatsAreDetectedFromTheFirstBytes) {
   writeSurfaceMesh(stl, core::makeTorus(1.0, 0.4, 0.2));
   EXPECT_EQ(meshFileFormat(stl), "STL (binary)");
   const fs::path msh = dir_ / "s.msh";
-  writeTetMesh(msh, *meshPrimitive("sphere", 2000));
+  writeTetMesh(msh, *meshPrimitive(core::PrimitiveShape::Sphere, 2000));
   EXPECT_EQ(meshFileFormat(msh), "Gmsh .msh 4.1 (ASCII)");
 }
 

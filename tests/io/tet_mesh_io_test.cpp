@@ -44,7 +44,7 @@ class TetMeshIo : public testing::Test {
 /// An irregular TetGen mesh with coordinates that need all 17 digits.
 std::shared_ptr<const TetMesh> awkwardMesh() {
   static const auto mesh = [] {
-    const auto m = meshPrimitive("torus", 3000);
+    const auto m = meshPrimitive(core::PrimitiveShape::Torus, 3000);
     std::vector<Vec3> p = m->positions();
     for (auto& x : p) x = x / 3.0 + Vec3(1e-9, -7.123456789, 1e4 / 7);
     return std::make_shared<const TetMesh>(std::move(p), m->tets());

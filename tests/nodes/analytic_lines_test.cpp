@@ -20,28 +20,28 @@ namespace {
 struct LineCase {
   const char* name;
   std::array<const char*, 6> expressions;  // xx yy zz xy yz xz
-  core::CurveType type;
-  core::PointPattern pattern;
+  core::DegenerateType type;
+  core::DegeneratePattern pattern;
 };
 
 // Each field's degenerate set is exactly the z axis (x = y = 0).
 const LineCase kCases[] = {
     {"F1 L-wedge",
      {"x-1", "-x-1", "2", "y", "0", "0"},
-     core::CurveType::Linear,
-     core::PointPattern::Wedge},
+     core::DegenerateType::Linear,
+     core::DegeneratePattern::Wedge},
     {"F1 L-trisector",
      {"x-1", "-x-1", "2", "-y", "0", "0"},
-     core::CurveType::Linear,
-     core::PointPattern::Trisector},
+     core::DegenerateType::Linear,
+     core::DegeneratePattern::Trisector},
     {"F3 P-wedge",
      {"1+x", "1-x", "-2", "y", "0", "0"},
-     core::CurveType::Planar,
-     core::PointPattern::Wedge},
+     core::DegenerateType::Planar,
+     core::DegeneratePattern::Wedge},
     {"F3 P-trisector",
      {"1+x", "1-x", "-2", "-y", "0", "0"},
-     core::CurveType::Planar,
-     core::PointPattern::Trisector},
+     core::DegenerateType::Planar,
+     core::DegeneratePattern::Trisector},
 };
 
 void expectTheZAxis(const core::DegenerateCurves& curves, const LineCase& c, double edge) {

@@ -108,8 +108,8 @@ TEST(NodeTypes, ExportVtuColoursTheTetsAlongEachCurveWithFigure5Colours) {
     const core::DegenerateCurve& curve = curves->curve(static_cast<int>(ids[t]));
     seen.insert(curve.id);
     std::set<std::array<double, 3>> allowed;
-    for (auto pattern : {core::PointPattern::Wedge, core::PointPattern::Trisector,
-                         core::PointPattern::Transition}) {
+    for (auto pattern : {core::DegeneratePattern::Wedge, core::DegeneratePattern::Trisector,
+                         core::DegeneratePattern::Transition}) {
       const auto c = core::fig5Colour(curve.type, pattern);
       allowed.insert({double(c[0]), double(c[1]), double(c[2])});
     }

@@ -279,6 +279,9 @@ void cookAllParams(CookContext& c) {
       case graph::ParamKind::DoubleList:
         out += std::to_string(c.param<std::vector<double>>(p.name).size());
         break;
+      case graph::ParamKind::StringList:
+        for (const auto& s : c.param<std::vector<std::string>>(p.name)) out += s + ",";
+        break;
     }
     out += ";";
   }

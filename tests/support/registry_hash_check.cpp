@@ -101,6 +101,15 @@ std::optional<ParamValue> perturbedValue(const ParamDecl& d, const ParamValue& c
       c.push_back(longer);
       return first(c);
     }
+    case ParamKind::StringList: {
+      const auto list = std::get<std::vector<std::string>>(current);
+      std::vector<ParamValue> c;
+      // Each single choice, then the list with its first element dropped.
+      for (const std::string& choice : d.choices) c.push_back(std::vector<std::string>{choice});
+      if (d.choices.empty()) c.push_back(std::vector<std::string>{"changed"});
+      if (!list.empty()) c.push_back(std::vector<std::string>(list.begin() + 1, list.end()));
+      return first(c);
+    }
   }
   return std::nullopt;
 }

@@ -62,7 +62,7 @@ double harmonicDefect(const TensorField& f, const std::vector<unsigned char>& fi
 }
 
 TEST(Propagate, BoundaryConformingFieldHasTheNormalAsEigenvectorEverywhereOnTheBoundary) {
-  const auto mesh = io::meshPrimitive("sphere", 20000);
+  const auto mesh = io::meshPrimitive(core::PrimitiveShape::Sphere, 20000);
   const ConstraintSet set = wedgeAndTensor();
   const PropagateResult result = propagate(mesh, set);
   const FixedValues design = applyConstraints(*mesh, set);
@@ -160,7 +160,7 @@ TEST(Propagate, ErrorsAreClear) {
 }
 
 TEST(Propagate, BitwiseEqualForOneAndTwoThreads) {
-  const auto mesh = io::meshPrimitive("double_torus", 15000);
+  const auto mesh = io::meshPrimitive(core::PrimitiveShape::DoubleTorus, 15000);
   ConstraintSet set;
   PointElement p;
   p.field = makeDegenerateLinearization(Vec3(2.2, 0.0, 0.0), Mat3::Identity(),

@@ -50,9 +50,10 @@ TEST(HarmonicSolver, ReproducesLinearFieldsOnBoxMeshes) {
 }
 
 TEST(HarmonicSolver, ReproducesLinearFieldsOnTetGenMeshesOfEachSolid) {
-  for (const char* shape : {"sphere", "box", "torus", "double_torus"}) {
+  for (const PrimitiveShape shape : {PrimitiveShape::Sphere, PrimitiveShape::Box,
+                                     PrimitiveShape::Torus, PrimitiveShape::DoubleTorus}) {
     const auto mesh = io::meshPrimitive(shape, 6000);
-    EXPECT_LT(linearReproductionError(mesh), 1e-8) << shape;
+    EXPECT_LT(linearReproductionError(mesh), 1e-8) << int(shape);
   }
 }
 
@@ -167,7 +168,7 @@ TEST(HarmonicSolver, WarmStartFromTheSolutionNeedsNoIterations) {
 }
 
 TEST(HarmonicSolver, BitwiseEqualForOneAndTwoThreads) {
-  const auto mesh = io::meshPrimitive("torus", 20000);
+  const auto mesh = io::meshPrimitive(core::PrimitiveShape::Torus, 20000);
   std::vector<unsigned char> fixed(mesh->vertexCount(), 0);
   std::vector<Tensor> values(mesh->vertexCount());
   for (int v = 0; v < static_cast<int>(mesh->vertexCount()); v += 211) {
@@ -276,7 +277,7 @@ TEST(HarmonicSolver, CancellationStopsTheSolve) {
 }
 
 TEST(HarmonicSolver, MultigridHierarchyIsSmallAndCoarsens) {
-  const auto mesh = io::meshPrimitive("sphere", 30000);
+  const auto mesh = io::meshPrimitive(core::PrimitiveShape::Sphere, 30000);
   std::vector<unsigned char> fixed(mesh->vertexCount(), 0);
   fixed[0] = 1;
   const HarmonicSolver solver(mesh, fixed);

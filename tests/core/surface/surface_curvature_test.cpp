@@ -34,7 +34,7 @@ TEST(SurfaceCurvature, SphereIsUmbilicWithCurvatureOneOverRadius) {
 
 TEST(SurfaceCurvature, TorusPrincipalDirectionsRunAroundAndAlongTheTube) {
   const double R = 1.0, a = 0.4;
-  const auto mesh = io::meshPrimitive("torus", 40000);
+  const auto mesh = io::meshPrimitive(core::PrimitiveShape::Torus, 40000);
   const auto curvature = boundaryCurvatureTensors(*mesh);
   int outer = 0, inner = 0;
   for (std::size_t i = 0; i < curvature.size(); ++i) {

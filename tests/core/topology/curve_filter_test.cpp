@@ -20,7 +20,7 @@ struct Designed {
 /// the ball), propagated boundary-conforming.
 const Designed& designedBall() {
   static const Designed d = [] {
-    auto mesh = io::meshPrimitive("sphere", 30'000);
+    auto mesh = io::meshPrimitive(core::PrimitiveShape::Sphere, 30'000);
     ConstraintSet set;
     PointElement e;
     e.degenerate = true;
@@ -55,7 +55,7 @@ TEST(CurveFilter, DroppingBoundaryCurvesKeepsTheDesignedCurveThroughTheCentre) {
   const auto pick = kept.pick(Vec3(0.02, 0.01, 0.03));
   ASSERT_TRUE(pick.has_value());
   EXPECT_LT(pick->distance, d.mesh->meanEdgeLength());
-  EXPECT_EQ(kept.curve(pick->curveId).type, CurveType::Linear);
+  EXPECT_EQ(kept.curve(pick->curveId).type, DegenerateType::Linear);
   for (const DegenerateCurve& c : kept.curves()) EXPECT_FALSE(hugsBoundary(c, *d.mesh));
   for (int i = 0; i < int(kept.size()); ++i) EXPECT_EQ(kept.curves()[i].id, i) << "renumbered";
 }

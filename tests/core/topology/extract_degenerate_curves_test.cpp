@@ -35,8 +35,8 @@ struct AnalyticCase {
   const char* name;
   TensorFunction field;
   Vec3 point, direction;  // the exact straight curve
-  CurveType type;
-  PointPattern pattern;
+  DegenerateType type;
+  DegeneratePattern pattern;
   double half;  // mesh box [−half, half]³
 };
 
@@ -57,8 +57,9 @@ void checkStraightCurve(const AnalyticCase& c, std::shared_ptr<const TetMesh> me
   int matching = 0;
   for (std::size_t i = 0; i < curve.points.size(); ++i) {
     EXPECT_LT(distanceToLine(curve.points[i], c.point, c.direction), h);
-    EXPECT_NE(curve.patterns[i],
-              c.pattern == PointPattern::Wedge ? PointPattern::Trisector : PointPattern::Wedge);
+    EXPECT_NE(curve.patterns[i], c.pattern == DegeneratePattern::Wedge
+                                     ? DegeneratePattern::Trisector
+                                     : DegeneratePattern::Wedge);
     matching += curve.patterns[i] == c.pattern;
   }
   EXPECT_GT(matching, int(curve.points.size()) * 9 / 10);
@@ -71,16 +72,16 @@ void checkStraightCurve(const AnalyticCase& c, std::shared_ptr<const TetMesh> me
 
 const std::vector<AnalyticCase>& analyticCases() {
   static const std::vector<AnalyticCase> cases = {
-      {"F1 L-wedge", f1Wedge, Vec3::Zero(), Vec3::UnitZ(), CurveType::Linear, PointPattern::Wedge,
-       1},
-      {"F1 L-trisector", f1Trisector, Vec3::Zero(), Vec3::UnitZ(), CurveType::Linear,
-       PointPattern::Trisector, 1},
-      {"F3 P-wedge", f3Wedge, Vec3::Zero(), Vec3::UnitZ(), CurveType::Planar, PointPattern::Wedge,
-       1},
-      {"F3 P-trisector", f3Trisector, Vec3::Zero(), Vec3::UnitZ(), CurveType::Planar,
-       PointPattern::Trisector, 1},
-      {"SingleTopoLine", singleTopoLine, Vec3::Zero(), Vec3(1, 1, 1), CurveType::Linear,
-       PointPattern::Wedge, 0.5},
+      {"F1 L-wedge", f1Wedge, Vec3::Zero(), Vec3::UnitZ(), DegenerateType::Linear,
+       DegeneratePattern::Wedge, 1},
+      {"F1 L-trisector", f1Trisector, Vec3::Zero(), Vec3::UnitZ(), DegenerateType::Linear,
+       DegeneratePattern::Trisector, 1},
+      {"F3 P-wedge", f3Wedge, Vec3::Zero(), Vec3::UnitZ(), DegenerateType::Planar,
+       DegeneratePattern::Wedge, 1},
+      {"F3 P-trisector", f3Trisector, Vec3::Zero(), Vec3::UnitZ(), DegenerateType::Planar,
+       DegeneratePattern::Trisector, 1},
+      {"SingleTopoLine", singleTopoLine, Vec3::Zero(), Vec3(1, 1, 1), DegenerateType::Linear,
+       DegeneratePattern::Wedge, 0.5},
   };
   return cases;
 }
@@ -114,7 +115,7 @@ TEST(TopologyExtract, TiltedCircleIsOneLoopWithTwoTransitions) {
   ASSERT_EQ(curves.size(), 1u) << curves.summary();
   const DegenerateCurve& c = curves.curve(0);
   EXPECT_TRUE(c.closed);
-  EXPECT_EQ(c.type, CurveType::Linear);
+  EXPECT_EQ(c.type, DegenerateType::Linear);
   const double h = mesh->meanEdgeLength();
   std::vector<Vec3> transitions;
   for (std::size_t i = 0; i < c.points.size(); ++i) {
@@ -122,12 +123,12 @@ TEST(TopologyExtract, TiltedCircleIsOneLoopWithTwoTransitions) {
     EXPECT_NEAR(std::hypot(p.x(), p.y()), 0.5, h);
     EXPECT_NEAR(p.z(), 0.3 * p.x(), h);
     if (p.y() > h) {
-      EXPECT_EQ(c.patterns[i], PointPattern::Wedge) << p.transpose();
+      EXPECT_EQ(c.patterns[i], DegeneratePattern::Wedge) << p.transpose();
     }
     if (p.y() < -h) {
-      EXPECT_EQ(c.patterns[i], PointPattern::Trisector) << p.transpose();
+      EXPECT_EQ(c.patterns[i], DegeneratePattern::Trisector) << p.transpose();
     }
-    if (c.patterns[i] == PointPattern::Transition) transitions.push_back(p);
+    if (c.patterns[i] == DegeneratePattern::Transition) transitions.push_back(p);
   }
   ASSERT_GE(transitions.size(), 2u);
   for (const Vec3& t : transitions) {
@@ -333,11 +334,12 @@ TEST(TopologyExtract, PickFindsTheNearestCurveAndItsParameter) {
 TEST(TopologyExtract, CanonicalOrderDoesNotDependOnInputOrder) {
   DegenerateCurve a, b;
   a.points = {{1, 0, 0}, {2, 0, 0}, {3, 0, 0}};
-  a.patterns.assign(3, PointPattern::Wedge);
+  a.patterns.assign(3, DegeneratePattern::Wedge);
   a.tangents.assign(3, Vec3::UnitX());
   b.points = {{0, 1, 0}, {0, 0, 1}, {0, 0, 0}};
   b.closed = true;
-  b.patterns = {PointPattern::Wedge, PointPattern::Trisector, PointPattern::Transition};
+  b.patterns = {DegeneratePattern::Wedge, DegeneratePattern::Trisector,
+                DegeneratePattern::Transition};
   DegenerateCurve ar = a;
   std::reverse(ar.points.begin(), ar.points.end());
   ar.tangents.assign(3, -Vec3::UnitX());
@@ -350,7 +352,7 @@ TEST(TopologyExtract, CanonicalOrderDoesNotDependOnInputOrder) {
   }
   // The loop starts at its smallest point and keeps each point's pattern.
   EXPECT_EQ(one.curve(0).points[0], Vec3(0, 0, 0));
-  EXPECT_EQ(one.curve(0).patterns[0], PointPattern::Transition);
+  EXPECT_EQ(one.curve(0).patterns[0], DegeneratePattern::Transition);
   EXPECT_EQ(one.statistics().closed, 1);
   EXPECT_EQ(one.statistics().transitionPoints, 1);
   DegenerateCurve mismatched;

@@ -108,15 +108,15 @@ TEST(TopologyLinearField, PointsLieExactlyOnTheCurveWithTheRightTypeAndPattern) 
         ASSERT_TRUE(exact.point(c.eigenvectors[i], p, sigma));
         EXPECT_LT((p - c.points[i]).norm(), 1e-9 * domain) << "seed " << seed << " point " << i;
         EXPECT_LT(testing::scaledDiscriminant(lf(c.points[i])), 1e-18);
-        EXPECT_EQ(sigma > 0, c.type == CurveType::Linear);
+        EXPECT_EQ(sigma > 0, c.type == DegenerateType::Linear);
         const double cosine = exact.cosine(c.eigenvectors[i]);
-        if (c.patterns[i] == PointPattern::Transition) {
+        if (c.patterns[i] == DegeneratePattern::Transition) {
           ++transitions;
           if (c.sources[i].kind == PointSource::Kind::Tet) {
             EXPECT_LT(std::abs(cosine), 1e-9);
           }
         } else if (std::abs(cosine) > 1e-9) {
-          EXPECT_EQ(cosine > 0, c.patterns[i] == PointPattern::Wedge) << "seed " << seed;
+          EXPECT_EQ(cosine > 0, c.patterns[i] == DegeneratePattern::Wedge) << "seed " << seed;
           ++(cosine > 0 ? wedges : trisectors);
         }
         // Tangent of the exact curve: the same formula with exact gradients.
@@ -143,7 +143,7 @@ TEST(TopologyLinearField, PointsLieExactlyOnTheCurveWithTheRightTypeAndPattern) 
 }
 
 TEST(TopologyLinearField, ExactOnATetGenSphere) {
-  const auto mesh = io::meshPrimitive("sphere", 20000);
+  const auto mesh = io::meshPrimitive(core::PrimitiveShape::Sphere, 20000);
   int points = 0;
   for (unsigned seed = 50; seed < 54; ++seed) {
     std::mt19937_64 rng(seed);
@@ -161,7 +161,7 @@ TEST(TopologyLinearField, ExactOnATetGenSphere) {
         double sigma;
         ASSERT_TRUE(exact.point(c.eigenvectors[i], p, sigma));
         EXPECT_LT((p - c.points[i]).norm(), 2e-9);
-        EXPECT_EQ(sigma > 0, c.type == CurveType::Linear);
+        EXPECT_EQ(sigma > 0, c.type == DegenerateType::Linear);
         ++points;
       }
     }
@@ -179,15 +179,16 @@ TEST(TopologyLinearField, TransitionPointsAreWhereTheTangentIsPerpendicular) {
     const DegenerateCurves curves = extractDegenerateCurves(testing::sampleField(mesh, lf));
     for (const DegenerateCurve& c : curves.curves()) {
       for (std::size_t i = 0; i < c.points.size(); ++i) {
-        if (c.patterns[i] != PointPattern::Transition ||
+        if (c.patterns[i] != DegeneratePattern::Transition ||
             c.sources[i].kind != PointSource::Kind::Tet)
           continue;
         // At a transition point the tangent is perpendicular to the eigenvector and the
         // pattern changes between its neighbours.
         EXPECT_LT(std::abs(c.tangents[i].dot(c.eigenvectors[i])), 1e-8);
         EXPECT_NEAR(c.tangents[i].norm(), 1, 1e-12);
-        if (i > 0 && i + 1 < c.points.size() && c.patterns[i - 1] != PointPattern::Transition &&
-            c.patterns[i + 1] != PointPattern::Transition) {
+        if (i > 0 && i + 1 < c.points.size() &&
+            c.patterns[i - 1] != DegeneratePattern::Transition &&
+            c.patterns[i + 1] != DegeneratePattern::Transition) {
           EXPECT_NE(c.patterns[i - 1], c.patterns[i + 1]);
         }
         ++found;

@@ -14,10 +14,10 @@
 namespace tfd::io {
 namespace {
 
-using core::CurveType;
 using core::DegenerateCurve;
 using core::DegenerateCurves;
-using core::PointPattern;
+using core::DegeneratePattern;
+using core::DegenerateType;
 using core::Vec3;
 
 std::filesystem::path tempDir() {
@@ -37,16 +37,17 @@ std::string readFile(const std::filesystem::path& p) {
 /// An open L curve of 3 points (wedge, transition, trisector) and a closed P loop of 4.
 DegenerateCurves sampleCurves() {
   DegenerateCurve open;
-  open.type = CurveType::Linear;
+  open.type = DegenerateType::Linear;
   open.points = {{0.1, 0.2, 0.3}, {0.4, 0.5, 0.6}, {1.0 / 3, 0.8, 0.9}};
-  open.patterns = {PointPattern::Wedge, PointPattern::Transition, PointPattern::Trisector};
+  open.patterns = {DegeneratePattern::Wedge, DegeneratePattern::Transition,
+                   DegeneratePattern::Trisector};
   open.tangents.assign(3, Vec3::UnitX());
   open.eigenvectors.assign(3, Vec3::UnitZ());
   DegenerateCurve loop;
-  loop.type = CurveType::Planar;
+  loop.type = DegenerateType::Planar;
   loop.closed = true;
   loop.points = {{2, 0, 0}, {3, 0, 0}, {3, 1, 0}, {2, 1, 0}};
-  loop.patterns.assign(4, PointPattern::Wedge);
+  loop.patterns.assign(4, DegeneratePattern::Wedge);
   return DegenerateCurves({loop, open}, {"a warning"});
 }
 
@@ -66,7 +67,7 @@ TEST(CurveWriters, JsonHasExactlyTheDocumentedSchema) {
     for (auto it = j.begin(); it != j.end(); ++it) keys.push_back(it.key());
     EXPECT_EQ(keys, (std::vector<std::string>{"id", "type", "closed", "points", "pattern"}));
     EXPECT_EQ(j["id"], int(i));
-    EXPECT_EQ(j["type"], c.type == CurveType::Linear ? "linear" : "planar");
+    EXPECT_EQ(j["type"], c.type == DegenerateType::Linear ? "linear" : "planar");
     EXPECT_EQ(j["closed"], c.closed);
     ASSERT_EQ(j["points"].size(), c.points.size());
     ASSERT_EQ(j["pattern"].size(), c.points.size());

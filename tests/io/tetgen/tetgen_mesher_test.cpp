@@ -80,7 +80,7 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST(Tetgen, TetCountFollowsTheTargetOverARange) {
   for (double target : {5'000.0, 40'000.0}) {
-    const auto mesh = meshPrimitive("sphere", target);
+    const auto mesh = meshPrimitive(core::PrimitiveShape::Sphere, target);
     EXPECT_NEAR(double(mesh->tetCount()) / target, 1.0, 0.25) << target;
   }
 }

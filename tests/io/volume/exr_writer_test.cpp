@@ -49,8 +49,7 @@ io::ExrExportOptions allQuantities(const core::TensorField& field, double voxelS
   std::vector<double> density;
   for (const auto& p : field.mesh().positions()) density.push_back(p.x() + 2 * p.y() - p.z());
   o.quantities =
-      io::VoxelQuantities::fromNames({"eigenvectors", "tensor", "density", "eigenvalues"},
-                                     io::interpolateVertexScalars(field.meshPtr(), density));
+      io::VoxelQuantities{true, true, true, io::interpolateVertexScalars(field.meshPtr(), density)};
   return o;
 }
 

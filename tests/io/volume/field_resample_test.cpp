@@ -129,9 +129,7 @@ TEST(VoxelQuantities, NamesOrderAndValues) {
   const auto mesh = core::makeBoxMesh(1, 1, 1, Vec3(0, 0, 0), Vec3(1, 1, 1));
   std::vector<double> density(mesh->vertexCount());
   for (std::size_t v = 0; v < density.size(); ++v) density[v] = mesh->positions()[v].sum();
-  const auto q =
-      io::VoxelQuantities::fromNames({"density", "eigenvectors", "tensor", "eigenvalues"},
-                                     io::interpolateVertexScalars(mesh, density));
+  const auto q = io::VoxelQuantities{true, true, true, io::interpolateVertexScalars(mesh, density)};
   EXPECT_EQ(q.channelCount(), 19);
   const auto names = q.channelNames("S");
   ASSERT_EQ(names.size(), 19u);

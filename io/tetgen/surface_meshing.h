@@ -1,0 +1,49 @@
+#pragma once
+// Meshing a surface as the TetMesh node asks for it: the boundary rule (keep the surface
+// triangles or let TetGen refine them) and the welding of vertices repeated at one position
+// (UV seams, per-face exports), on top of io/tetgen/tetgen_mesher.h.
+#include <memory>
+#include <string>
+
+#include "core/progress.h"
+#include "core/surface/surface_mesh.h"
+#include "core/tet_mesh.h"
+
+namespace tfd::io {
+
+/// keep: the surface triangles are the mesh boundary (TetGen -Y; the tet count then follows the
+/// surface's resolution); refine: TetGen may split them for quality and size; auto: keep for
+/// procedural solids and for surfaces already as fine as the target needs (mean edge at most
+/// kKeepableEdgeRatio times the edge length the target asks for), refine coarser ones.
+enum class BoundaryMode { Auto, Keep, Refine };
+
+/// Surface edges up to this factor above the target edge length count as fine enough to keep.
+inline constexpr double kKeepableEdgeRatio = 1.5;
+/// TetGen's volume-bound calibration without -Y (boundary refined too; see bench/RESULTS.md).
+inline constexpr double kRefineVolumeFactor = 2.5;
+
+struct SurfaceMeshingRequest {
+  double targetTets = 20'000;
+  double quality = 1.414;  ///< TetGen radius-edge bound (0: no quality refinement)
+  BoundaryMode boundary = BoundaryMode::Auto;
+  double timeLimit = 0;  ///< seconds TetGen may run (TetgenOptions::timeLimit; 0: automatic)
+  /// A procedural solid (core/surface/primitives.h): its surface already matches the target, so
+  /// auto keeps it, and it has no repeated vertices to weld.
+  bool procedural = false;
+  std::string source;  ///< names the surface in messages, e.g. "file 'part.stl'"
+};
+
+struct SurfaceMeshingReport {
+  std::size_t weldedVertices = 0;    ///< vertices merged into an earlier one at the same place
+  std::size_t droppedTriangles = 0;  ///< triangles that lost a corner in the welding
+  bool boundaryKept = true;          ///< the surface triangles are the mesh boundary
+};
+
+/// Welds (unless procedural), applies the boundary rule and tetrahedralises (tetrahedralize's
+/// errors and guarantees). `report` may be null.
+std::shared_ptr<const core::TetMesh> meshSurface(core::SurfaceMesh surface,
+                                                 const SurfaceMeshingRequest& request,
+                                                 SurfaceMeshingReport* report,
+                                                 const core::Progress& progress = {});
+
+}  // namespace tfd::io
