@@ -10,16 +10,16 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-Rgba fig5(core::CurveType type, core::PointPattern pattern) {
+Rgba fig5(core::DegenerateType type, core::DegeneratePattern pattern) {
   const auto c = core::fig5Colour(type, pattern);
   return {c[0], c[1], c[2], 255};
 }
 
 /// A segment's pattern: its first endpoint's, unless that is a transition point.
-core::PointPattern segmentPattern(const core::DegenerateCurve& c, std::size_t i, std::size_t j) {
-  if (c.patterns[i] != core::PointPattern::Transition) return c.patterns[i];
-  if (c.patterns[j] != core::PointPattern::Transition) return c.patterns[j];
-  return core::PointPattern::Wedge;
+core::DegeneratePattern segmentPattern(const core::DegenerateCurve& c, std::size_t i, std::size_t j) {
+  if (c.patterns[i] != core::DegeneratePattern::Transition) return c.patterns[i];
+  if (c.patterns[j] != core::DegeneratePattern::Transition) return c.patterns[j];
+  return core::DegeneratePattern::Wedge;
 }
 
 void addFrame(Scene& scene, const Vec3& origin, const core::Mat3& frame, double length) {
@@ -83,8 +83,8 @@ void addCurves(Scene& scene, const core::DegenerateCurves& curves) {
     }
     for (std::size_t i = 0; i < n; ++i) {
       scene.bounds.extend(c.points[i]);
-      if (c.patterns[i] == core::PointPattern::Transition)
-        scene.points.add(c.points[i], fig5(c.type, core::PointPattern::Transition));
+      if (c.patterns[i] == core::DegeneratePattern::Transition)
+        scene.points.add(c.points[i], fig5(c.type, core::DegeneratePattern::Transition));
     }
   }
 }

@@ -14,13 +14,13 @@
 namespace tfd::render {
 namespace {
 
-core::DegenerateCurve straight(core::CurveType type, core::PointPattern pattern, Vec3 a, Vec3 b,
+core::DegenerateCurve straight(core::DegenerateType type, core::DegeneratePattern pattern, Vec3 a, Vec3 b,
                                int points = 20) {
   core::DegenerateCurve c;
   c.type = type;
   for (int i = 0; i < points; ++i) {
     c.points.push_back(a + (b - a) * (double(i) / (points - 1)));
-    c.patterns.push_back(i == points / 2 ? core::PointPattern::Transition : pattern);
+    c.patterns.push_back(i == points / 2 ? core::DegeneratePattern::Transition : pattern);
   }
   return c;
 }
@@ -28,11 +28,11 @@ core::DegenerateCurve straight(core::CurveType type, core::PointPattern pattern,
 TEST(HeadlessRender, CurvesInFigure5ColoursInsideTheBoundary) {
   auto mesh = core::makeBoxMesh(6, 6, 6, Vec3(-1, -1, -1), Vec3(1, 1, 1));
   core::DegenerateCurves curves({
-      straight(core::CurveType::Linear, core::PointPattern::Wedge, {-0.8, -0.6, 0}, {0.8, -0.6, 0}),
-      straight(core::CurveType::Linear, core::PointPattern::Trisector, {-0.8, -0.2, 0},
+      straight(core::DegenerateType::Linear, core::DegeneratePattern::Wedge, {-0.8, -0.6, 0}, {0.8, -0.6, 0}),
+      straight(core::DegenerateType::Linear, core::DegeneratePattern::Trisector, {-0.8, -0.2, 0},
                {0.8, -0.2, 0}),
-      straight(core::CurveType::Planar, core::PointPattern::Wedge, {-0.8, 0.2, 0}, {0.8, 0.2, 0}),
-      straight(core::CurveType::Planar, core::PointPattern::Trisector, {-0.8, 0.6, 0},
+      straight(core::DegenerateType::Planar, core::DegeneratePattern::Wedge, {-0.8, 0.2, 0}, {0.8, 0.2, 0}),
+      straight(core::DegenerateType::Planar, core::DegeneratePattern::Trisector, {-0.8, 0.6, 0},
                {0.8, 0.6, 0}),
   });
   SceneInput in;
@@ -61,7 +61,7 @@ TEST(HeadlessRender, CurvesInFigure5ColoursInsideTheBoundary) {
 TEST(HeadlessRender, TheViewPresetsLookAlongTheirAxes) {
   // One red (P-trisector) curve along x: seen from x it is a dot, from z a long line.
   auto mesh = core::makeBoxMesh(3, 3, 3, Vec3(-1, -1, -1), Vec3(1, 1, 1));
-  core::DegenerateCurves curves({straight(core::CurveType::Planar, core::PointPattern::Trisector,
+  core::DegenerateCurves curves({straight(core::DegenerateType::Planar, core::DegeneratePattern::Trisector,
                                           {-0.9, 0, 0}, {0.9, 0, 0})});
   SceneInput in;
   in.mesh = mesh.get();

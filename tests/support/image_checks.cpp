@@ -19,8 +19,8 @@ ColourCounts countColours(const render::Image& image, int tolerance) {
     std::string name;
     std::array<int, 3> rgb;
   };
-  using core::CurveType;
-  using core::PointPattern;
+  using core::DegenerateType;
+  using core::DegeneratePattern;
   auto rgb = [](std::array<std::uint8_t, 3> x) { return std::array<int, 3>{x[0], x[1], x[2]}; };
   const render::DrawOptions defaults;
   const std::array<int, 3> bg{int(defaults.background[0] * 255 + 0.5),
@@ -28,10 +28,10 @@ ColourCounts countColours(const render::Image& image, int tolerance) {
                               int(defaults.background[2] * 255 + 0.5)};
   const auto& m = render::kConstraintColour;
   const std::vector<Named> palette = {
-      {"L-wedge", rgb(core::fig5Colour(CurveType::Linear, PointPattern::Wedge))},
-      {"L-trisector", rgb(core::fig5Colour(CurveType::Linear, PointPattern::Trisector))},
-      {"P-wedge", rgb(core::fig5Colour(CurveType::Planar, PointPattern::Wedge))},
-      {"P-trisector", rgb(core::fig5Colour(CurveType::Planar, PointPattern::Trisector))},
+      {"L-wedge", rgb(core::fig5Colour(DegenerateType::Linear, DegeneratePattern::Wedge))},
+      {"L-trisector", rgb(core::fig5Colour(DegenerateType::Linear, DegeneratePattern::Trisector))},
+      {"P-wedge", rgb(core::fig5Colour(DegenerateType::Planar, DegeneratePattern::Wedge))},
+      {"P-trisector", rgb(core::fig5Colour(DegenerateType::Planar, DegeneratePattern::Trisector))},
       {"white", {255, 255, 255}},
       {"constraint", {m[0], m[1], m[2]}},
       {"grey", {110, 115, 125}},

@@ -9,6 +9,7 @@
 #include <QSignalBlocker>
 #include <QSpinBox>
 #include <QToolButton>
+#include <algorithm>
 
 #include <climits>
 #include <cmath>
@@ -219,6 +220,41 @@ class MultilineEditor : public ParamEditor {
   QPlainTextEdit* text_;
 };
 
+/// A list of choices (e.g. the quantities of a voxel export): one check box per choice, the
+/// value lists the checked ones in declaration order.
+class ChoiceSetEditor : public ParamEditor {
+ public:
+  ChoiceSetEditor(const graph::ParamDecl& d, QWidget* parent) : ParamEditor(d, parent) {
+    auto* l = row(this);
+    for (const std::string& choice : d.choices) {
+      auto* box = new QCheckBox(QString::fromStdString(choice), this);
+      l->addWidget(box);
+      connect(box, &QCheckBox::toggled, this, [this] { commit(); });
+      boxes_.push_back(box);
+    }
+    l->addStretch(1);
+  }
+  void setValue(const graph::ParamValue& v) override {
+    const auto& list = std::get<std::vector<std::string>>(v);
+    for (std::size_t i = 0; i < boxes_.size(); ++i) {
+      const QSignalBlocker b(boxes_[i]);
+      boxes_[i]->setChecked(std::find(list.begin(), list.end(), decl().choices[i]) != list.end());
+    }
+    setError({});
+  }
+
+ private:
+  void commit() {
+    std::vector<std::string> list;
+    for (std::size_t i = 0; i < boxes_.size(); ++i)
+      if (boxes_[i]->isChecked()) list.push_back(decl().choices[i]);
+    const QString problem = problemWith(list);
+    setError(problem);
+    if (problem.isEmpty()) edit(std::move(list));
+  }
+  std::vector<QCheckBox*> boxes_;
+};
+
 /// vec3 and fixed-size number lists: one spin box per component.
 class ComponentsEditor : public ParamEditor {
  public:
@@ -312,6 +348,9 @@ std::unique_ptr<ParamEditor> makeParamEditor(const graph::ParamDecl& d, QWidget*
       return std::make_unique<ListTextEditor>(d, parent);
     case K::Vec3List:
       return std::make_unique<PointListEditor>(d, parent);
+    case K::StringList:
+      if (!d.choices.empty()) return std::make_unique<ChoiceSetEditor>(d, parent);
+      return std::make_unique<ListTextEditor>(d, parent);
   }
   return std::make_unique<TextEditor>(d, parent);
 }
