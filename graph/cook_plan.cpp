@@ -76,7 +76,7 @@ CookResult storeCook(CookPlan& p, const CookOptions& options, ValueCache& cache)
     if (!p.needed[i]) continue;
     NodeReport& r = p.reports[i];
     if (r.state == NodeState::Cooked)
-      cache.insert(p.keys[i], CacheEntry{r.outputs, r.messages, r.seconds, r.files, 0});
+      cache.insert(p.keys[i], CacheEntry{r.outputs, r.messages, r.seconds, 0, r.files});
     result.reports.push_back(std::move(r));
   }
   result.cancelled =

@@ -23,8 +23,8 @@ struct CacheEntry {
   std::vector<Value> outputs;         ///< in declaration order
   std::vector<NodeMessage> messages;  ///< info and warnings of the cook that produced it
   double seconds = 0;                 ///< that cook's duration
-  std::vector<FileStamp> files;       ///< side-effect nodes: the files that cook wrote
   std::size_t bytes = 0;              ///< filled by insert()
+  std::vector<FileStamp> files{};     ///< side-effect nodes: the files that cook wrote
 };
 
 class ValueCache {
