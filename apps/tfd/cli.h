@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "graph/graph.h"
 #include "graph/node_registry.h"
@@ -26,6 +27,11 @@ void printError(const std::string& message);
 /// returns nothing.
 std::optional<graph::Graph> loadGraphOrReport(const std::filesystem::path& path,
                                               const graph::NodeRegistry& registry);
+/// loadGraphOrReport, then each `--set NODE.PARAM=VALUE` override in order; a bad override is
+/// reported like a load error (nothing returned).
+std::optional<graph::Graph> loadGraphWithOverrides(const std::filesystem::path& path,
+                                                   const graph::NodeRegistry& registry,
+                                                   const std::vector<std::string>& sets);
 
 // Subcommands: each adds itself to the app and runs from the callback it registers, storing
 // its exit code in `exitCode`.

@@ -3,6 +3,7 @@
 #include "apps/tfd/cli.h"
 #include "graph/errors.h"
 #include "graph/graph_file.h"
+#include "graph/overrides.h"
 
 namespace tfd::cli {
 
@@ -18,6 +19,22 @@ std::optional<graph::Graph> loadGraphOrReport(const std::filesystem::path& path,
     printError(path.string() + ": " + e.what());
   }
   return std::nullopt;
+}
+
+std::optional<graph::Graph> loadGraphWithOverrides(const std::filesystem::path& path,
+                                                   const graph::NodeRegistry& registry,
+                                                   const std::vector<std::string>& sets) {
+  std::optional<graph::Graph> graph = loadGraphOrReport(path, registry);
+  if (!graph) return std::nullopt;
+  for (const std::string& text : sets) {
+    try {
+      graph::applyOverride(*graph, graph::parseOverride(text));
+    } catch (const graph::GraphError& e) {
+      printError(e.what());
+      return std::nullopt;
+    }
+  }
+  return graph;
 }
 
 }  // namespace tfd::cli

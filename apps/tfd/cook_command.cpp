@@ -27,16 +27,9 @@ struct CookArgs {
 };
 
 int runCook(const CookArgs& args, const Context& context) {
-  std::optional<graph::Graph> graph = loadGraphOrReport(args.graph, context.registry);
+  std::optional<graph::Graph> graph =
+      loadGraphWithOverrides(args.graph, context.registry, args.sets);
   if (!graph) return kUsage;
-  for (const std::string& text : args.sets) {
-    try {
-      graph::applyOverride(*graph, graph::parseOverride(text));
-    } catch (const graph::GraphError& e) {
-      printError(e.what());
-      return kUsage;
-    }
-  }
   for (const std::string& target : args.targets)
     if (!graph->findNode(target)) {
       printError("--node " + target + ": unknown node \"" + target + "\"");

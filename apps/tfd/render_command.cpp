@@ -58,16 +58,9 @@ std::vector<std::string> targetsFor(const graph::Graph& g, const std::string& no
 }
 
 int runRender(const RenderArgs& args, const Context& context) {
-  std::optional<graph::Graph> graph = loadGraphOrReport(args.graph, context.registry);
+  std::optional<graph::Graph> graph =
+      loadGraphWithOverrides(args.graph, context.registry, args.sets);
   if (!graph) return kUsage;
-  for (const std::string& text : args.sets) {
-    try {
-      graph::applyOverride(*graph, graph::parseOverride(text));
-    } catch (const graph::GraphError& e) {
-      printError(e.what());
-      return kUsage;
-    }
-  }
   const std::string node = args.node.empty() ? nodes::displayNodeName(*graph) : args.node;
   if (node.empty()) {
     printError(args.graph + ": the graph has no nodes to draw");
