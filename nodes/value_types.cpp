@@ -22,4 +22,13 @@ std::size_t constraintBytes(const core::ConstraintSet& set) {
 
 std::size_t curvesBytes(const core::DegenerateCurves& curves) { return curves.byteSize(); }
 
+std::size_t surfaceMeshBytes(const core::SurfaceMesh& mesh) {
+  return mesh.positions.size() * sizeof(core::Vec3) +
+         mesh.triangles.size() * sizeof(mesh.triangles[0]);
+}
+
+std::size_t instancePointsBytes(const core::InstancePoints& points) {
+  return points.points.size() * sizeof(core::InstancePoint);
+}
+
 }  // namespace tfd::nodes::detail

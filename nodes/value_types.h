@@ -2,6 +2,8 @@
 // The graph value types of tfd's nodes, with their stable display names and approximate sizes
 // for the memory-bounded cook cache. Include this header in every node file.
 #include "core/design/design_element.h"
+#include "core/surface/surface_mesh.h"
+#include "core/synth/instance_points.h"
 #include "core/tensor_field.h"
 #include "core/tet_mesh.h"
 #include "core/topology/degenerate_curves.h"
@@ -12,6 +14,8 @@ std::size_t meshBytes(const core::TetMesh& mesh);
 std::size_t fieldBytes(const core::TensorField& field);
 std::size_t constraintBytes(const core::ConstraintSet& set);
 std::size_t curvesBytes(const core::DegenerateCurves& curves);
+std::size_t surfaceMeshBytes(const core::SurfaceMesh& mesh);
+std::size_t instancePointsBytes(const core::InstancePoints& points);
 }  // namespace tfd::nodes::detail
 
 TFD_GRAPH_VALUE_TYPE_SIZED(tfd::core::TetMesh, "TetMesh", tfd::nodes::detail::meshBytes);
@@ -20,3 +24,6 @@ TFD_GRAPH_VALUE_TYPE_SIZED(tfd::core::ConstraintSet, "Constraints",
                            tfd::nodes::detail::constraintBytes);
 TFD_GRAPH_VALUE_TYPE_SIZED(tfd::core::DegenerateCurves, "DegenerateCurves",
                            tfd::nodes::detail::curvesBytes);
+TFD_GRAPH_VALUE_TYPE_SIZED(tfd::core::SurfaceMesh, "Mesh", tfd::nodes::detail::surfaceMeshBytes);
+TFD_GRAPH_VALUE_TYPE_SIZED(tfd::core::InstancePoints, "Points",
+                           tfd::nodes::detail::instancePointsBytes);
