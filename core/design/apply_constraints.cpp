@@ -27,6 +27,8 @@ void applyPointElement(const TetMesh& mesh, const PointElement& element, int ind
   if (!origin.allFinite()) throw Error(describe(index, origin) + ": position is not finite");
   if (!std::isfinite(element.radius) || element.radius < 0)
     throw Error(describe(index, origin) + ": radius must be a number ≥ 0");
+  if (!std::isfinite(element.radiusEdges) || element.radiusEdges < 0)
+    throw Error(describe(index, origin) + ": radius in edge lengths must be a number ≥ 0");
   for (const Tensor& t : element.field.jacobian)
     for (double c : t.components())
       if (!std::isfinite(c)) throw Error(describe(index, origin) + ": Jacobian is not finite");
@@ -42,9 +44,10 @@ void applyPointElement(const TetMesh& mesh, const PointElement& element, int ind
   const double epsilon = kCurveBlendEpsilon * mesh.meanEdgeLength();
   const auto& pos = mesh.positions();
   std::vector<int> vertices(mesh.tets()[location->tet].begin(), mesh.tets()[location->tet].end());
-  if (element.radius > 0) {
+  const double radius = std::max(element.radius, element.radiusEdges * mesh.meanEdgeLength());
+  if (radius > 0) {
     // Every vertex within the radius (a parallel scan in fixed chunks keeps the order).
-    const double r2 = element.radius * element.radius;
+    const double r2 = radius * radius;
     const std::size_t n = mesh.vertexCount();
     const std::size_t chunks = (n + linalg::kChunk - 1) / linalg::kChunk;
     std::vector<std::vector<int>> found(chunks);

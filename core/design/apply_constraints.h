@@ -6,7 +6,8 @@
 // Input: a mesh and the ConstraintSet of a graph (point and curve elements, in input order).
 // Output: FixedValues (ascending vertex ids, blended values, counts).
 // Rules: a point element fixes the 4 vertices of the tet that contains it, and also every
-// vertex within `radius` of it when radius > 0; each such vertex gets field.evaluate(vertex
+// vertex within its support radius max(radius, radiusEdges × mean edge length) when that is
+// > 0; each such vertex gets field.evaluate(vertex
 // position) (Equation 2 at the vertex). Curves go through applyCurveElement
 // (core/design/curve_constraint.h). Where several elements claim a vertex their values are
 // blended with weights blendWeight(d, ε) (d = distance from the vertex to the element, ε =

@@ -20,13 +20,20 @@ struct LocalLinearization {
   Tensor evaluate(const Vec3& p) const;  ///< world-space tensor at p (traceless part)
 };
 
-/// A point design element applied to the vertices of the tet that holds it, or to every vertex
-/// within `radius` of it when radius > 0.
+/// A point design element applied to the vertices of the tet that holds it and to every vertex
+/// within its support radius: max(radius, radiusEdges × the mesh's mean edge length).
 struct PointElement {
   LocalLinearization field;
   bool degenerate = false;
-  double radius = 0;
+  double radius = 0;       ///< absolute support radius (0: none)
+  double radiusEdges = 0;  ///< support radius in mean edge lengths of the mesh (0: none)
 };
+
+/// The support a degenerate point gets by default, in mean edge lengths. Fixing only the 4
+/// vertices of the holding tet lets the harmonic solve close the point's degenerate curve into
+/// a speck about one tet long; fixing a ball of radius r keeps the linearisation's straight
+/// degenerate line (Eq. 2–3) for a length of at least 2r, a curve a user can see.
+inline constexpr double kAutoPointSupportEdges = 3.0;
 
 /// Non-degenerate element: eigenvalues along the frame's columns (traceless part is taken).
 LocalLinearization makeTensorLinearization(const Vec3& origin, const Mat3& frame,

@@ -31,12 +31,39 @@ bool inBoundaryLayer(const PointSource& s, const TetMesh& mesh) {
   return false;
 }
 
+/// Points inside a tet (transition points and arc samples) lie on the curve between two
+/// skeleton points of the same tet; the filters ignore them so that `arcSamples` never changes
+/// which curves pass (a tet holding a short boundary arc can have two interior vertices while
+/// the faces the curve crosses have one). A curve with no skeleton point keeps all its points.
+bool onSkeleton(const PointSource& s) { return s.kind != PointSource::Kind::Tet; }
+
+bool hasSkeletonPoint(const DegenerateCurve& curve) {
+  return std::any_of(curve.sources.begin(), curve.sources.end(), onSkeleton);
+}
+
 }  // namespace
 
 bool hugsBoundary(const DegenerateCurve& curve, const TetMesh& mesh) {
+  const bool skeletonOnly = hasSkeletonPoint(curve);
   return !curve.sources.empty() &&
-         std::all_of(curve.sources.begin(), curve.sources.end(),
-                     [&](const auto& s) { return inBoundaryLayer(s, mesh); });
+         std::all_of(curve.sources.begin(), curve.sources.end(), [&](const auto& s) {
+           return (skeletonOnly && !onSkeleton(s)) || inBoundaryLayer(s, mesh);
+         });
+}
+
+double skeletonLength(const DegenerateCurve& curve) {
+  if (!hasSkeletonPoint(curve)) return curve.length();
+  double length = 0;
+  const Vec3* first = nullptr;
+  const Vec3* previous = nullptr;
+  for (std::size_t i = 0; i < curve.points.size(); ++i) {
+    if (!onSkeleton(curve.sources[i])) continue;
+    if (previous) length += (curve.points[i] - *previous).norm();
+    if (!first) first = &curve.points[i];
+    previous = &curve.points[i];
+  }
+  if (curve.closed) length += (*first - *previous).norm();
+  return length;
 }
 
 int boundaryCurveCount(const DegenerateCurves& curves, const TetMesh& mesh) {
@@ -50,7 +77,7 @@ DegenerateCurves filterCurves(const DegenerateCurves& curves, const TetMesh& mes
     throw Error("min_length must be a finite number >= 0");
   std::vector<DegenerateCurve> kept;
   for (const DegenerateCurve& c : curves.curves()) {
-    if (c.length() < filter.minLength) continue;
+    if (skeletonLength(c) < filter.minLength) continue;
     if (filter.dropBoundary && hugsBoundary(c, mesh)) continue;
     kept.push_back(c);
   }

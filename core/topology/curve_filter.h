@@ -12,13 +12,22 @@
 namespace tfd::core {
 
 struct CurveFilter {
-  double minLength = 0;       ///< drop curves shorter than this (loops: their perimeter)
+  double minLength = 0;       ///< drop curves whose skeletonLength is below this
   bool dropBoundary = false;  ///< drop curves that hug the boundary (hugsBoundary)
 };
 
-/// True when every point of `curve` lies in the boundary layer of `mesh`: the simplex holding
-/// it (its PointSource: face, edge, vertex or tet) has at most one vertex off the boundary.
+// Both filters look only at the curve's points on mesh faces, edges and vertices (its skeleton),
+// not at the points inside tets (transition points, arc samples), so that
+// ExtractOptions::arcSamples changes how a curve is drawn, never which curves pass.
+
+/// True when every skeleton point of `curve` lies in the boundary layer of `mesh`: the simplex
+/// holding it (its PointSource: face, edge or vertex) has at most one vertex off the boundary.
+/// A curve without skeleton points is judged by its tets.
 bool hugsBoundary(const DegenerateCurve& curve, const TetMesh& mesh);
+
+/// The length of the polyline through the curve's skeleton points (loops: their perimeter);
+/// the full length() for a curve without skeleton points.
+double skeletonLength(const DegenerateCurve& curve);
 
 /// Number of curves of `curves` that hug the boundary.
 int boundaryCurveCount(const DegenerateCurves& curves, const TetMesh& mesh);

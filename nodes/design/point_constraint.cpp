@@ -1,5 +1,6 @@
 // PointConstraint: one design element at a point (paper §5, "Design", Equations 2-3).
 #include <algorithm>
+#include <nlohmann/json.hpp>
 
 #include "core/design/design_element.h"
 
@@ -11,11 +12,16 @@
 namespace tfd::nodes {
 namespace {
 
+enum class Support { Auto, Tet, Radius };
+const graph::Choices<Support> kSupports{
+    {"auto", Support::Auto}, {"tet", Support::Tet}, {"radius", Support::Radius}};
+
 void declare(graph::NodeDecl& d) {
   d.doc(
        "A design element at a point: a tensor value, or a degenerate tensor with the local "
        "linearisation of Eq. 2 (wedge or trisector pattern, Eq. 3). It fixes the vertices of "
-       "the tet that holds it, or every vertex within `radius`.")
+       "the tet that holds it and, by default, every vertex within a few mean edge lengths, so a "
+       "degenerate point's curve is long enough to see.")
       .category("Design");
   d.output<core::ConstraintSet>("constraints").doc("One point element.");
   d.param<graph::Vec3Param>("position").hint(graph::UiHint::Position).doc("Where the element is.");
@@ -44,15 +50,36 @@ void declare(graph::NodeDecl& d) {
   d.param<graph::Vec3Param>("rotation")
       .hint(graph::UiHint::Angle)
       .doc("Frame rotation: Euler angles in degrees about x, then y, then z.");
-  d.param<double>("radius").byDefault(0).min(0).doc(
-      "0: fix the 4 vertices of the tet holding the point; > 0: every vertex within it.");
+  d.param<std::string>("support").choices(kSupports).doc(
+      "Which vertices take the element's value: auto, every vertex within 3 mean edge "
+      "lengths of the mesh (a degenerate curve a few edges long); tet, only the 4 vertices "
+      "of the tet holding the point (the curve may close into a speck); radius, every "
+      "vertex within `radius`.");
+  d.param<double>("radius").byDefault(0.1).min(0).doc(
+      "support radius: fix every vertex within this distance (and the holding tet).");
+  d.migration(1, [](graph::Json& params) {
+    // typeVersion 1 had no `support`: radius 0 meant the holding tet, > 0 the radius.
+    const bool radius = params.contains("radius") && params["radius"].is_number() &&
+                        params["radius"].get<double>() > 0;
+    params["support"] = radius ? "radius" : "tet";
+    if (!radius) params.erase("radius");
+  });
 }
 
 void cook(graph::CookContext& c) {
   const core::Vec3 position = vec3Param(c, "position");
   const core::Mat3 frame = core::rotationFromEulerDegrees(vec3Param(c, "rotation"));
   core::PointElement element;
-  element.radius = c.param<double>("radius");
+  switch (c.param("support", kSupports)) {
+    case Support::Auto:
+      element.radiusEdges = core::kAutoPointSupportEdges;
+      break;
+    case Support::Tet:
+      break;
+    case Support::Radius:
+      element.radius = c.param<double>("radius");
+      break;
+  }
   if (c.param<std::string>("kind") == "degenerate") {
     element.degenerate = true;
     element.field =
@@ -82,6 +109,6 @@ void cook(graph::CookContext& c) {
 
 }  // namespace
 
-void registerPointConstraint(graph::NodeRegistry& r) { r.add("PointConstraint", 1, declare, cook); }
+void registerPointConstraint(graph::NodeRegistry& r) { r.add("PointConstraint", 2, declare, cook); }
 
 }  // namespace tfd::nodes

@@ -1,6 +1,10 @@
 // ExtractDegenerateCurves: the topology of a field (paper §3-4).
 #include "core/topology/extract_degenerate_curves.h"
+
+#include <sstream>
+
 #include "core/topology/curve_filter.h"
+#include "core/topology/design_point_curves.h"
 
 #include "graph/node_registry.h"
 #include "nodes/node_support.h"
@@ -20,12 +24,19 @@ void declare(graph::NodeDecl& d) {
        "trisector or transition.")
       .category("Topology");
   d.input<core::TensorField>("field");
+  d.input<core::ConstraintSet>("constraints")
+      .optional()
+      .doc(
+          "The design the field was propagated from: the node then reports the curve through "
+          "each degenerate design point (length, type) and warns when it is only a speck.");
   d.output<core::DegenerateCurves>("curves").doc("Classified degenerate curves with stable ids.");
   d.param<int>("arc_samples")
       .byDefault(0)
       .min(0)
       .max(16)
-      .doc("Extra points per tet segment sampled on the exact curve (smoother drawing).");
+      .doc(
+          "Extra points per tet segment sampled on the exact curve: smoother drawing only; "
+          "which curves exist, their ids and the filters below do not depend on it.");
   d.param<double>("perturbation")
       .byDefault(1e-7)
       .min(0)
@@ -43,7 +54,40 @@ void declare(graph::NodeDecl& d) {
   d.param<double>("min_length")
       .byDefault(0)
       .min(0)
-      .doc("Drop curves shorter than this (loops: by perimeter); 0 keeps all.");
+      .doc(
+          "Drop curves shorter than this (loops: by perimeter, measured through the curve's "
+          "points on mesh faces); 0 keeps all.");
+}
+
+std::string describePoint(const core::DesignPointCurve& r) {
+  std::ostringstream s;
+  s << "degenerate point " << r.element << " at (" << r.position.x() << ", " << r.position.y()
+    << ", " << r.position.z() << "): ";
+  if (!r.pick) {
+    s << "no degenerate curve within 2 mean edge lengths";
+    return s.str();
+  }
+  s << "curve " << r.pick->curveId << ", " << core::toString(r.type) << ", length " << r.length;
+  if (!r.typeMatches) s << " (designed the other type)";
+  return s.str();
+}
+
+/// One line per degenerate design point; warnings for specks, missing or mistyped curves.
+void reportDesignPoints(graph::CookContext& c, const core::DegenerateCurves& curves,
+                        const core::TensorField& field) {
+  const auto constraints = c.inputOr<core::ConstraintSet>("constraints", nullptr);
+  if (!constraints) return;
+  const double h = field.mesh().meanEdgeLength();
+  for (const core::DesignPointCurve& r : core::curvesThroughDesignPoints(curves, *constraints, h)) {
+    const std::string line = describePoint(r);
+    if (!r.pick || !r.typeMatches)
+      c.warning(line);
+    else if (r.speck)
+      c.warning(line + ": a speck shorter than " + std::to_string(int(core::kSpeckEdges)) +
+                " mean edge lengths; give the point a larger support (PointConstraint.support)");
+    else
+      c.info(line);
+  }
 }
 
 void cook(graph::CookContext& c) {
@@ -66,6 +110,7 @@ void cook(graph::CookContext& c) {
             (filter.dropBoundary ? " (dropped)" : "");
   if (filter.minLength > 0) info += "; curves shorter than min_length dropped";
   c.info(info);
+  reportDesignPoints(c, *curves, *field);
   c.setOutput("curves", std::move(curves));
 }
 

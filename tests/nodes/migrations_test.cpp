@@ -51,6 +51,24 @@ TEST(NodeMigrations, UpgradedFilesSaveAsTheCurrentTypeVersionAndLoadAgain) {
   EXPECT_EQ(graph::graphToText(again), text);
 }
 
+TEST(NodeMigrations, PointConstraintsOfTypeVersion1KeepTheirSupport) {
+  // PointConstraint 1 -> 2: radius 0 (or none) meant the holding tet only; the new default
+  // support is auto (a few mean edge lengths), so old files must say `tet` explicitly.
+  const graph::Graph g = graph::loadGraphFile(
+      TFD_TEST_DATA_DIR "/graphs/migrations/point_constraint_v1.tfd.json", registry());
+  EXPECT_EQ(std::get<std::string>(g.param("in_tet", "support")), "tet");
+  EXPECT_EQ(std::get<std::string>(g.param("zero_radius", "support")), "tet");
+  EXPECT_EQ(std::get<std::string>(g.param("with_radius", "support")), "radius");
+  EXPECT_EQ(std::get<double>(g.param("with_radius", "radius")), 0.25);
+  const graph::Json saved = graph::graphToJson(g);
+  EXPECT_EQ(saved["nodes"]["in_tet"]["typeVersion"], 2);
+  const graph::Graph fresh = graph::parseGraph(
+      R"({"format": "tfd-graph", "formatVersion": 2, "nodes": {
+        "p": {"type": "PointConstraint", "typeVersion": 2, "params": {}}}, "links": []})",
+      registry(), "new.tfd.json");
+  EXPECT_EQ(std::get<std::string>(fresh.param("p", "support")), "auto");
+}
+
 TEST(NodeMigrations, AnUnknownOldQuantityIsReportedNamingTheParameter) {
   const std::string text = R"({"format": "tfd-graph", "formatVersion": 2, "nodes": {
     "vdb": {"type": "ExportVDB", "typeVersion": 1, "params": {"quantities": "tensor, colour"}}},
