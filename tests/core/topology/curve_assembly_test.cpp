@@ -54,7 +54,9 @@ TEST(CurveAssembly, OpenChainBetweenBoundaryPointsInNodeOrder) {
     EXPECT_EQ(c.points[i], nodes[i].position);  // the walk starts at the lowest end node
     EXPECT_EQ(c.sources[i].id, 10 + i);
     EXPECT_EQ(c.patterns[i], DegeneratePattern::Wedge);
-    if (i < 3) EXPECT_GT(c.tangents[i].dot(nodes[i + 1].position - nodes[i].position), 0);
+    if (i < 3) {
+      EXPECT_GT(c.tangents[i].dot(nodes[i + 1].position - nodes[i].position), 0);
+    }
   }
   EXPECT_EQ(r.danglingEnds, 0);
   EXPECT_EQ(r.junctions, 0);

@@ -47,7 +47,7 @@ TEST(SegmentClassification, DesignedWedgesAndTrisectorsAreRecognised) {
   int cases = 0;
   for (const auto type : {DegenerateType::Linear, DegenerateType::Planar}) {
     for (const auto pattern : {DegeneratePattern::Wedge, DegeneratePattern::Trisector}) {
-      for (const Vec3 euler : {Vec3(0, 0, 0), Vec3(30, -40, 75), Vec3(170, 20, -5)}) {
+      for (const Vec3& euler : {Vec3(0, 0, 0), Vec3(30, -40, 75), Vec3(170, 20, -5)}) {
         const Mat3 frame = rotationFromEulerDegrees(euler);
         const LocalLinearization l =
             makeDegenerateLinearization(Vec3(0.3, -0.2, 0.1), frame, type, pattern);

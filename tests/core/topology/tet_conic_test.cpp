@@ -54,10 +54,13 @@ TEST(TetConic, EveryConicPointIsADegeneratePointOfTheField) {
 TEST(TetConic, TheDesignedDegenerateLineIsOnTheConic) {
   // A degenerate design element at the origin (paper Eq. 3) makes the origin a degenerate point
   // with the frame's z axis as non-repeated eigenvector: the conic passes through it there.
+  // Eq. 3 has no z derivative (not generic: no conic), so one is added; the origin keeps T0.
+  std::mt19937_64 rng(17);
   for (const auto type : {DegenerateType::Linear, DegenerateType::Planar}) {
     const Mat3 frame = rotationFromEulerDegrees(Vec3(10, 20, 30));
-    const LocalLinearization l =
+    LocalLinearization l =
         makeDegenerateLinearization(Vec3::Zero(), frame, type, DegeneratePattern::Wedge);
+    l.jacobian[2] = testing::randomTraceless(rng, 0.3);
     TetData t;
     t.corners = {Vec3(-0.2, -0.2, -0.2), Vec3(0.3, -0.1, -0.1), Vec3(-0.1, 0.3, -0.1),
                  Vec3(-0.1, -0.1, 0.3)};
@@ -84,7 +87,9 @@ TEST(TetConic, NonGenericFieldsHaveNoConic) {
   // Zero field.
   for (auto& a : t.tensors) a = Tensor{};
   EXPECT_FALSE(TetConic(TetLinearField(t.corners, t.tensors)).valid());
-  // Field varying along one direction only: span of dimension 2.
+  // Field varying along x only (span of dimension 2), on a corner tet whose local gradients
+  // along y and z come out exactly zero.
+  t.corners = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)};
   const Tensor a0 = testing::randomTraceless(rng), g = testing::randomTraceless(rng);
   for (int i = 0; i < 4; ++i) t.tensors[i] = a0 + t.corners[i].x() * g;
   EXPECT_FALSE(TetConic(TetLinearField(t.corners, t.tensors)).valid());
