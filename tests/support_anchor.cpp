@@ -1,1 +1,2 @@
-// Keeps tfd_test_support non-empty; shared test helpers live in tests/support/.
+// Keeps every tfd_test_support_<layer> library non-empty; shared test helpers live in
+// tests/support/ (tests/CMakeLists.txt says which layer each belongs to).

@@ -71,6 +71,27 @@ bool polish(const Vec5& t0, const Vec5& t1, const Vec5& t2, double& s, double& t
   return bestResidual < 1e-12;
 }
 
+/// Newton steps (clamped to ±0.25) on g(θ) = 0 from θ; true when |g| reaches the tolerance.
+bool refineRoot(const TrigQuadratic& g, double gScale, double& theta) {
+  bool converged = false;
+  for (int it = 0; it < 12; ++it) {
+    const double value = g.value(theta), slope = g.derivative(theta);
+    if (std::abs(value) <= 1e-15 * gScale) {
+      converged = true;
+      break;
+    }
+    if (slope == 0) break;
+    const double step = std::clamp(value / slope, -0.25, 0.25);
+    theta -= step;
+    if (std::abs(step) < 1e-15) {
+      converged = std::abs(g.value(theta)) <= 1e-11 * gScale;
+      break;
+    }
+  }
+  if (!converged) converged = std::abs(g.value(theta)) <= 1e-11 * gScale;
+  return converged;
+}
+
 }  // namespace
 
 FaceSolution solveFace(const Tensor& a, const Tensor& b, const Tensor& c,
@@ -144,22 +165,7 @@ FaceSolution solveFace(const Tensor& a, const Tensor& b, const Tensor& c,
 
   for (int i = 0; i < rootCount; ++i) {
     double theta = roots[i].theta;
-    bool converged = false;
-    for (int it = 0; it < 12; ++it) {
-      const double value = g.value(theta), slope = g.derivative(theta);
-      if (std::abs(value) <= 1e-15 * gScale) {
-        converged = true;
-        break;
-      }
-      if (slope == 0) break;
-      const double step = std::clamp(value / slope, -0.25, 0.25);
-      theta -= step;
-      if (std::abs(step) < 1e-15) {
-        converged = std::abs(g.value(theta)) <= 1e-11 * gScale;
-        break;
-      }
-    }
-    if (!converged) converged = std::abs(g.value(theta)) <= 1e-11 * gScale;
+    const bool converged = refineRoot(g, gScale, theta);
     const bool real = roots[i].isolated || converged;
 
     Vec3 v = chart.at(theta).normalized();

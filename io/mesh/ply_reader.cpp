@@ -94,14 +94,35 @@ struct BinaryCursor {
   }
 };
 
-}  // namespace
+struct Header {
+  bool ascii = false;
+  Endian endian = Endian::Little;
+  std::vector<Element> elements;
+};
 
-core::SurfaceMesh readPly(const std::filesystem::path& path) {
-  const std::string data = readFileBytes(path);
-  const std::string file = path.string();
-  TextScanner h(data, file, 0);
+/// One 'property' line (after the keyword) of the last element.
+Property parseProperty(TextScanner& h) {
+  Property p;
+  std::string_view typeName = h.token();
+  if (typeName == "list") {
+    p.list = true;
+    const std::string_view countName = h.token();
+    if (!parseType(countName, p.countType) || !isInteger(p.countType)) {
+      h.fail("expected an integer type for the list count, found " + describeToken(countName));
+    }
+    typeName = h.token();
+  }
+  if (!parseType(typeName, p.type)) {
+    h.fail("unknown property type " + describeToken(typeName));
+  }
+  p.name = std::string(h.token());
+  if (p.name.empty()) h.fail("expected a property name");
+  h.expectLineEnd("the property name");
+  return p;
+}
 
-  // Header.
+/// The header from 'ply' to 'end_header'; `h` is left on the 'end_header' line.
+Header parseHeader(TextScanner& h, const std::string& file) {
   if (!h.nextLine() || h.token() != "ply") {
     throw core::Error("file '" + file + "': not a PLY file (the first line must be 'ply')");
   }
@@ -109,18 +130,17 @@ core::SurfaceMesh readPly(const std::filesystem::path& path) {
   if (!h.nextLine()) h.failAtEnd("expected the 'format' line");
   if (h.token() != "format") h.fail("expected the 'format' line after 'ply'");
   const std::string_view format = h.token();
-  bool ascii = false;
-  Endian endian = Endian::Little;
+  Header header;
   if (format == "ascii") {
-    ascii = true;
+    header.ascii = true;
   } else if (format == "binary_big_endian") {
-    endian = Endian::Big;
+    header.endian = Endian::Big;
   } else if (format != "binary_little_endian") {
     h.fail("unknown PLY format " + describeToken(format) +
            "; expected ascii, binary_little_endian or binary_big_endian");
   }
   if (h.token() != "1.0") h.fail("expected PLY version 1.0");
-  std::vector<Element> elements;
+  std::vector<Element>& elements = header.elements;
   bool ended = false;
   while (!ended && h.nextLine()) {
     const std::string_view keyword = h.token();
@@ -135,23 +155,7 @@ core::SurfaceMesh readPly(const std::filesystem::path& path) {
       elements.push_back(std::move(e));
     } else if (keyword == "property") {
       if (elements.empty()) h.fail("'property' before any 'element'");
-      Property p;
-      std::string_view typeName = h.token();
-      if (typeName == "list") {
-        p.list = true;
-        const std::string_view countName = h.token();
-        if (!parseType(countName, p.countType) || !isInteger(p.countType)) {
-          h.fail("expected an integer type for the list count, found " + describeToken(countName));
-        }
-        typeName = h.token();
-      }
-      if (!parseType(typeName, p.type)) {
-        h.fail("unknown property type " + describeToken(typeName));
-      }
-      p.name = std::string(h.token());
-      if (p.name.empty()) h.fail("expected a property name");
-      h.expectLineEnd("the property name");
-      elements.back().properties.push_back(std::move(p));
+      elements.back().properties.push_back(parseProperty(h));
     } else if (keyword == "end_header") {
       ended = true;
     } else {
@@ -159,21 +163,30 @@ core::SurfaceMesh readPly(const std::filesystem::path& path) {
     }
   }
   if (!ended) h.failAtEnd("the header has no 'end_header'");
+  return header;
+}
 
-  // Which properties hold the geometry.
-  int vertexElement = -1, faceElement = -1, xyz[3] = {-1, -1, -1}, indices = -1;
+/// Which elements and properties hold the geometry.
+struct Layout {
+  int vertexElement = -1, faceElement = -1;
+  int xyz[3] = {-1, -1, -1};
+  int indices = -1;
+};
+
+Layout locateGeometry(const std::vector<Element>& elements, const std::string& file) {
+  Layout g;
   for (int e = 0; e < int(elements.size()); ++e) {
     const auto& el = elements[e];
     if (el.name == "vertex") {
-      vertexElement = e;
+      g.vertexElement = e;
       for (int p = 0; p < int(el.properties.size()); ++p) {
         const auto& prop = el.properties[p];
         for (int c = 0; c < 3; ++c) {
-          if (prop.name == std::string(1, char('x' + c)) && !prop.list) xyz[c] = p;
+          if (prop.name == std::string(1, char('x' + c)) && !prop.list) g.xyz[c] = p;
         }
       }
     } else if (el.name == "face") {
-      faceElement = e;
+      g.faceElement = e;
       for (int p = 0; p < int(el.properties.size()); ++p) {
         const auto& prop = el.properties[p];
         if ((prop.name == "vertex_indices" || prop.name == "vertex_index") && prop.list) {
@@ -181,141 +194,171 @@ core::SurfaceMesh readPly(const std::filesystem::path& path) {
             throw core::Error("file '" + file + "': face property '" + prop.name +
                               "' must have an integer type");
           }
-          indices = p;
+          g.indices = p;
         }
       }
     }
   }
-  if (vertexElement < 0 || xyz[0] < 0 || xyz[1] < 0 || xyz[2] < 0) {
+  if (g.vertexElement < 0 || g.xyz[0] < 0 || g.xyz[1] < 0 || g.xyz[2] < 0) {
     throw core::Error("file '" + file +
                       "': the header declares no 'vertex' element with properties x, y, z");
   }
-  if (faceElement < 0 || indices < 0) {
+  if (g.faceElement < 0 || g.indices < 0) {
     throw core::Error("file '" + file +
                       "': the header declares no 'face' element with a 'vertex_indices' list");
   }
+  return g;
+}
 
+/// Collects vertices and fan-triangulated faces while the body is read.
+struct MeshBuilder {
+  const Layout& layout;
+  long long vertexCount;
   core::SurfaceMesh mesh;
-  const long long nv = elements[vertexElement].count;
-  if (nv > (long long)data.size()) {
-    throw core::Error("file '" + file + "': " + std::to_string(nv) +
-                      " vertices cannot fit in the file");
+  core::Vec3 point = core::Vec3::Zero();  ///< the current vertex record
+  std::vector<long long> corners;         ///< the current face record
+
+  void startRecord() {
+    point = core::Vec3::Zero();
+    corners.clear();
   }
-  mesh.positions.reserve(nv);
-  std::vector<long long> corners;
-  auto addFace = [&](long long f, const auto& failHere) {
+  /// A scalar property q of element e.
+  void scalar(int e, int q, double value) {
+    if (e != layout.vertexElement) return;
+    for (int c = 0; c < 3; ++c) {
+      if (q == layout.xyz[c]) point[c] = value;
+    }
+  }
+  bool isIndexList(int e, int q) const { return e == layout.faceElement && q == layout.indices; }
+  template <class Fail>
+  void addFace(long long f, const Fail& failHere) {
     if (corners.size() < 3) {
       failHere("face " + std::to_string(f) + " has " + std::to_string(corners.size()) +
                " vertices; a face needs at least 3");
     }
     for (long long c : corners) {
-      if (c < 0 || c >= nv) {
+      if (c < 0 || c >= vertexCount) {
         failHere("face " + std::to_string(f) + " uses vertex " + std::to_string(c) +
-                 ", out of range [0, " + std::to_string(nv) + ")");
+                 ", out of range [0, " + std::to_string(vertexCount) + ")");
       }
     }
     for (std::size_t i = 2; i < corners.size(); ++i) {
       mesh.triangles.push_back({int(corners[0]), int(corners[i - 1]), int(corners[i])});
     }
-  };
+  }
+};
 
-  if (ascii) {
-    TextScanner s(data, file, 0, h.nextOffset(), h.lineNumber() + 1);
-    for (int e = 0; e < int(elements.size()); ++e) {
-      const Element& el = elements[e];
-      for (long long i = 0; i < el.count; ++i) {
-        if (!s.nextLine()) {
-          s.failAtEnd("expected " + std::to_string(el.count) + " " + el.name + " lines, found " +
-                      std::to_string(i));
-        }
-        core::Vec3 p = core::Vec3::Zero();
-        corners.clear();
-        for (int q = 0; q < int(el.properties.size()); ++q) {
-          const Property& prop = el.properties[q];
-          const std::string what =
-              "property '" + prop.name + "' of " + el.name + " " + std::to_string(i);
-          if (prop.list) {
-            const long long n = s.integer("the list length of " + what);
-            if (n < 0) s.fail("negative list length in " + what);
-            for (long long k = 0; k < n; ++k) {
-              if (e == faceElement && q == indices) {
-                corners.push_back(s.integer("a vertex index in " + what));
-              } else {
-                s.number("a value of " + what);
-              }
-            }
-          } else {
-            const double value = s.number(what);
-            if (e == vertexElement) {
-              for (int c = 0; c < 3; ++c) {
-                if (q == xyz[c]) p[c] = value;
-              }
-            }
-          }
-        }
-        s.expectLineEnd(el.name + " " + std::to_string(i));
-        if (e == vertexElement) mesh.positions.push_back(p);
-        if (e == faceElement) addFace(i, [&](const std::string& m) { s.fail(m); });
+void readAsciiBody(const std::string& data, const std::string& file, const TextScanner& h,
+                   const std::vector<Element>& elements, MeshBuilder& b) {
+  TextScanner s(data, file, 0, h.nextOffset(), h.lineNumber() + 1);
+  for (int e = 0; e < int(elements.size()); ++e) {
+    const Element& el = elements[e];
+    for (long long i = 0; i < el.count; ++i) {
+      if (!s.nextLine()) {
+        s.failAtEnd("expected " + std::to_string(el.count) + " " + el.name + " lines, found " +
+                    std::to_string(i));
       }
-    }
-    if (s.nextLine()) s.fail("unexpected " + describeToken(s.token()) + " after the last element");
-  } else {
-    BinaryCursor c{data, h.nextOffset(), endian};
-    for (int e = 0; e < int(elements.size()); ++e) {
-      const Element& el = elements[e];
-      for (long long i = 0; i < el.count; ++i) {
-        auto truncated = [&]() {
-          throw core::Error("file '" + file + "': expected " + std::to_string(el.count) + " " +
-                            el.name + " records, found " + std::to_string(i) +
-                            " (file ended at byte " + std::to_string(data.size()) + ")");
-        };
-        core::Vec3 p = core::Vec3::Zero();
-        corners.clear();
-        for (int q = 0; q < int(el.properties.size()); ++q) {
-          const Property& prop = el.properties[q];
-          if (prop.list) {
-            if (!c.has(sizeOf(prop.countType))) truncated();
-            const double n = c.read(prop.countType);
-            if (n < 0) {
-              throw core::Error("file '" + file + "': negative list length in " + el.name + " " +
-                                std::to_string(i));
-            }
-            if (!c.has(std::size_t(n) * sizeOf(prop.type))) truncated();
-            for (long long k = 0; k < (long long)n; ++k) {
-              const double v = c.read(prop.type);
-              if (e == faceElement && q == indices) corners.push_back((long long)v);
-            }
-          } else {
-            if (!c.has(sizeOf(prop.type))) truncated();
-            const double v = c.read(prop.type);
-            if (e == vertexElement) {
-              for (int k = 0; k < 3; ++k) {
-                if (q == xyz[k]) p[k] = v;
-              }
+      b.startRecord();
+      for (int q = 0; q < int(el.properties.size()); ++q) {
+        const Property& prop = el.properties[q];
+        const std::string what =
+            "property '" + prop.name + "' of " + el.name + " " + std::to_string(i);
+        if (prop.list) {
+          const long long n = s.integer("the list length of " + what);
+          if (n < 0) s.fail("negative list length in " + what);
+          for (long long k = 0; k < n; ++k) {
+            if (b.isIndexList(e, q)) {
+              b.corners.push_back(s.integer("a vertex index in " + what));
+            } else {
+              s.number("a value of " + what);
             }
           }
-        }
-        if (e == vertexElement) {
-          if (!p.allFinite()) {
-            throw core::Error("file '" + file + "': vertex " + std::to_string(i) +
-                              " has a non-finite coordinate");
-          }
-          mesh.positions.push_back(p);
-        }
-        if (e == faceElement) {
-          addFace(i, [&](const std::string& m) { throw core::Error("file '" + file + "': " + m); });
+        } else {
+          b.scalar(e, q, s.number(what));
         }
       }
-    }
-    if (c.pos != data.size()) {
-      throw core::Error("file '" + file + "': " + std::to_string(data.size() - c.pos) +
-                        " unexpected bytes after the last element");
+      s.expectLineEnd(el.name + " " + std::to_string(i));
+      if (e == b.layout.vertexElement) b.mesh.positions.push_back(b.point);
+      if (e == b.layout.faceElement) b.addFace(i, [&](const std::string& m) { s.fail(m); });
     }
   }
-  if (mesh.triangles.empty()) {
+  if (s.nextLine()) s.fail("unexpected " + describeToken(s.token()) + " after the last element");
+}
+
+void readBinaryBody(const std::string& data, const std::string& file, std::size_t offset,
+                    Endian endian, const std::vector<Element>& elements, MeshBuilder& b) {
+  BinaryCursor c{data, offset, endian};
+  for (int e = 0; e < int(elements.size()); ++e) {
+    const Element& el = elements[e];
+    for (long long i = 0; i < el.count; ++i) {
+      auto truncated = [&]() {
+        throw core::Error("file '" + file + "': expected " + std::to_string(el.count) + " " +
+                          el.name + " records, found " + std::to_string(i) +
+                          " (file ended at byte " + std::to_string(data.size()) + ")");
+      };
+      b.startRecord();
+      for (int q = 0; q < int(el.properties.size()); ++q) {
+        const Property& prop = el.properties[q];
+        if (prop.list) {
+          if (!c.has(sizeOf(prop.countType))) truncated();
+          const double n = c.read(prop.countType);
+          if (n < 0) {
+            throw core::Error("file '" + file + "': negative list length in " + el.name + " " +
+                              std::to_string(i));
+          }
+          if (!c.has(std::size_t(n) * sizeOf(prop.type))) truncated();
+          for (long long k = 0; k < (long long)n; ++k) {
+            const double v = c.read(prop.type);
+            if (b.isIndexList(e, q)) b.corners.push_back((long long)v);
+          }
+        } else {
+          if (!c.has(sizeOf(prop.type))) truncated();
+          b.scalar(e, q, c.read(prop.type));
+        }
+      }
+      if (e == b.layout.vertexElement) {
+        if (!b.point.allFinite()) {
+          throw core::Error("file '" + file + "': vertex " + std::to_string(i) +
+                            " has a non-finite coordinate");
+        }
+        b.mesh.positions.push_back(b.point);
+      }
+      if (e == b.layout.faceElement) {
+        b.addFace(i, [&](const std::string& m) { throw core::Error("file '" + file + "': " + m); });
+      }
+    }
+  }
+  if (c.pos != data.size()) {
+    throw core::Error("file '" + file + "': " + std::to_string(data.size() - c.pos) +
+                      " unexpected bytes after the last element");
+  }
+}
+
+}  // namespace
+
+core::SurfaceMesh readPly(const std::filesystem::path& path) {
+  const std::string data = readFileBytes(path);
+  const std::string file = path.string();
+  TextScanner h(data, file, 0);
+  const Header header = parseHeader(h, file);
+  const Layout layout = locateGeometry(header.elements, file);
+
+  const long long nv = header.elements[layout.vertexElement].count;
+  if (nv > (long long)data.size()) {
+    throw core::Error("file '" + file + "': " + std::to_string(nv) +
+                      " vertices cannot fit in the file");
+  }
+  MeshBuilder builder{layout, nv, {}, core::Vec3::Zero(), {}};
+  builder.mesh.positions.reserve(nv);
+  if (header.ascii) {
+    readAsciiBody(data, file, h, header.elements, builder);
+  } else {
+    readBinaryBody(data, file, h.nextOffset(), header.endian, header.elements, builder);
+  }
+  if (builder.mesh.triangles.empty()) {
     throw core::Error("file '" + file + "': the mesh has no faces");
   }
-  return mesh;
+  return std::move(builder.mesh);
 }
 
 }  // namespace tfd::io

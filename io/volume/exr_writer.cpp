@@ -72,6 +72,37 @@ void removeAll(const std::vector<std::filesystem::path>& paths) {
   for (const auto& p : paths) std::filesystem::remove(p, ec);
 }
 
+/// The header of slice k (frame `frame`): size, compression and the tfd.* attributes that
+/// place the slice in space (docs/outputs.md); the channels are added by the caller.
+Imf::Header sliceHeader(const VoxelLattice& lattice, int k, int frame,
+                        const ExrExportOptions& options) {
+  const auto dims = lattice.dims();
+  Imf::Header header(dims[0], dims[1]);
+  header.compression() = Imf::ZIP_COMPRESSION;
+  const double h = lattice.voxelSize;
+  header.insert("tfd.voxelSize", Imf::DoubleAttribute(h));
+  header.insert("tfd.origin", Imf::V3dAttribute(v3d(lattice.origin)));
+  header.insert("tfd.indexMin",
+                Imf::V3iAttribute(Imath::V3i(lattice.min[0], lattice.min[1], lattice.min[2])));
+  header.insert("tfd.indexMax",
+                Imf::V3iAttribute(Imath::V3i(lattice.max[0], lattice.max[1], lattice.max[2])));
+  header.insert("tfd.axis", Imf::StringAttribute("z"));
+  header.insert("tfd.sliceIndex", Imf::IntAttribute(k));
+  header.insert("tfd.frame", Imf::IntAttribute(frame));
+  header.insert("tfd.sliceCount", Imf::IntAttribute(dims[2]));
+  const core::Vec3 firstPixel = lattice.centre(lattice.min[0], lattice.max[1], k);
+  header.insert("tfd.z", Imf::DoubleAttribute(firstPixel.z()));
+  header.insert("tfd.firstPixel", Imf::V3dAttribute(v3d(firstPixel)));
+  header.insert("tfd.columnStep", Imf::V3dAttribute(Imath::V3d(h, 0, 0)));
+  header.insert("tfd.rowStep", Imf::V3dAttribute(Imath::V3d(0, -h, 0)));
+  header.insert("tfd.tensorComponents", Imf::StringAttribute("xx,yy,zz,xy,yz,xz"));
+  header.insert("tfd.generator", Imf::StringAttribute(options.generator));
+  if (!options.source.empty()) {
+    header.insert("tfd.source", Imf::StringAttribute(options.source));
+  }
+  return header;
+}
+
 }  // namespace
 
 VoxelExportStats writeFieldExrSlices(const std::string& pattern, const core::TensorField& field,
@@ -136,8 +167,7 @@ VoxelExportStats writeFieldExrSlices(const std::string& pattern, const core::Ten
       const int frame = options.firstFrame + s;
       const fs::path target = expandFramePattern(pattern, frame);
 
-      Imf::Header header(width, height);
-      header.compression() = Imf::ZIP_COMPRESSION;
+      Imf::Header header = sliceHeader(lattice, k, frame, options);
       Imf::FrameBuffer frameBuffer;
       const std::size_t xStride = sizeof(float) * channels;
       for (int c = 0; c < channels; ++c) {
@@ -145,27 +175,6 @@ VoxelExportStats writeFieldExrSlices(const std::string& pattern, const core::Ten
         frameBuffer.insert(
             names[c], Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(pixels.data() + c), xStride,
                                  xStride * width));
-      }
-      const double h = lattice.voxelSize;
-      header.insert("tfd.voxelSize", Imf::DoubleAttribute(h));
-      header.insert("tfd.origin", Imf::V3dAttribute(v3d(lattice.origin)));
-      header.insert("tfd.indexMin",
-                    Imf::V3iAttribute(Imath::V3i(lattice.min[0], lattice.min[1], lattice.min[2])));
-      header.insert("tfd.indexMax",
-                    Imf::V3iAttribute(Imath::V3i(lattice.max[0], lattice.max[1], lattice.max[2])));
-      header.insert("tfd.axis", Imf::StringAttribute("z"));
-      header.insert("tfd.sliceIndex", Imf::IntAttribute(k));
-      header.insert("tfd.frame", Imf::IntAttribute(frame));
-      header.insert("tfd.sliceCount", Imf::IntAttribute(slices));
-      const core::Vec3 firstPixel = lattice.centre(lattice.min[0], lattice.max[1], k);
-      header.insert("tfd.z", Imf::DoubleAttribute(firstPixel.z()));
-      header.insert("tfd.firstPixel", Imf::V3dAttribute(v3d(firstPixel)));
-      header.insert("tfd.columnStep", Imf::V3dAttribute(Imath::V3d(h, 0, 0)));
-      header.insert("tfd.rowStep", Imf::V3dAttribute(Imath::V3d(0, -h, 0)));
-      header.insert("tfd.tensorComponents", Imf::StringAttribute("xx,yy,zz,xy,yz,xz"));
-      header.insert("tfd.generator", Imf::StringAttribute(options.generator));
-      if (!options.source.empty()) {
-        header.insert("tfd.source", Imf::StringAttribute(options.source));
       }
       staged.push_back(std::make_unique<StagedFile>(target));
       staged.back()->write([&](OutputFile& out) {

@@ -74,6 +74,97 @@ class SeekableVdbArchive : public openvdb::io::Archive {
 /// Floor division by the leaf size, valid for negative indices.
 int leafBlock(int index) { return index >= 0 ? index / kLeafDim : -((-index - 1) / kLeafDim) - 1; }
 
+/// The output grids, one per plan, in plan order (float and vector grids also by kind).
+struct OutputGrids {
+  std::vector<openvdb::FloatGrid::Ptr> floats;
+  std::vector<openvdb::Vec3SGrid::Ptr> vectors;
+  openvdb::GridPtrVec all;
+};
+
+OutputGrids makeGrids(const std::vector<GridPlan>& plans, const VoxelLattice& lattice) {
+  const auto transform = openvdb::math::Transform::createLinearTransform(lattice.voxelSize);
+  transform->postTranslate(
+      openvdb::Vec3d(lattice.origin.x(), lattice.origin.y(), lattice.origin.z()));
+  OutputGrids out;
+  for (const auto& p : plans) {
+    openvdb::GridBase::Ptr grid;
+    if (p.vector) {
+      auto g = openvdb::Vec3SGrid::create(openvdb::Vec3s(0, 0, 0));
+      g->setVectorType(openvdb::VEC_INVARIANT);
+      out.vectors.push_back(g);
+      grid = g;
+    } else {
+      auto g = openvdb::FloatGrid::create(0.0f);
+      out.floats.push_back(g);
+      grid = g;
+    }
+    grid->setName(p.name);
+    grid->setTransform(transform->copy());
+    grid->setSaveFloatAsHalf(false);
+    grid->setGridClass(p.tensorDerived ? openvdb::GRID_UNKNOWN : openvdb::GRID_FOG_VOLUME);
+    if (p.tensorDerived) {
+      grid->insertMeta("tensor_components", openvdb::StringMetadata("xx,yy,zz,xy,yz,xz"));
+    }
+    if (!p.component.empty()) grid->insertMeta("component", openvdb::StringMetadata(p.component));
+    out.all.push_back(grid);
+  }
+  return out;
+}
+
+/// Samples the voxels of the lattice inside one leaf block into `out` (leaves are made on the
+/// first active voxel).
+void sampleBlock(const core::TensorField& field, const VoxelQuantities& quantities,
+                 const std::vector<GridPlan>& plans, const VoxelLattice& lattice,
+                 const openvdb::Coord& leafOrigin, int floatGrids, int vectorGrids,
+                 BlockLeaves& out) {
+  std::vector<float> values(quantities.channelCount());
+  RowSampler sampler(field);
+  for (int k = std::max(leafOrigin.z(), lattice.min[2]);
+       k <= std::min(leafOrigin.z() + kLeafDim - 1, lattice.max[2]); ++k) {
+    for (int j = std::max(leafOrigin.y(), lattice.min[1]);
+         j <= std::min(leafOrigin.y() + kLeafDim - 1, lattice.max[1]); ++j) {
+      for (int i = std::max(leafOrigin.x(), lattice.min[0]);
+           i <= std::min(leafOrigin.x() + kLeafDim - 1, lattice.max[0]); ++i) {
+        const core::Vec3 p = lattice.centre(i, j, k);
+        const VoxelSample sample = sampler(p);
+        if (!sample.inside()) continue;
+        if (out.active++ == 0) {
+          for (int g = 0; g < floatGrids; ++g)
+            out.floats.push_back(std::make_unique<FloatLeaf>(leafOrigin, 0.0f, false));
+          for (int g = 0; g < vectorGrids; ++g) {
+            out.vectors.push_back(
+                std::make_unique<Vec3Leaf>(leafOrigin, openvdb::Vec3s(0, 0, 0), false));
+          }
+        }
+        quantities.evaluate(p, sample, values.data());
+        const openvdb::Index offset = FloatLeaf::coordToOffset(openvdb::Coord(i, j, k));
+        int f = 0, v = 0;
+        for (const auto& plan : plans) {
+          const float* c = values.data() + plan.firstChannel;
+          if (plan.vector) {
+            out.vectors[v++]->setValueOn(offset, openvdb::Vec3s(c[0], c[1], c[2]));
+          } else {
+            out.floats[f++]->setValueOn(offset, c[0]);
+          }
+        }
+      }
+    }
+  }
+}
+
+openvdb::MetaMap fileMetadata(const VdbExportOptions& options) {
+  openvdb::MetaMap fileMeta;
+  fileMeta.insertMeta("generator", openvdb::StringMetadata(options.generator));
+  if (!options.source.empty()) {
+    fileMeta.insertMeta("source", openvdb::StringMetadata(options.source));
+  }
+  fileMeta.insertMeta("tensor_components", openvdb::StringMetadata("xx,yy,zz,xy,yz,xz"));
+  fileMeta.insertMeta("voxel_convention",
+                      openvdb::StringMetadata("voxel (i,j,k) is centred on world = origin + "
+                                              "voxelSize * (i,j,k)"));
+  return fileMeta;
+}
+
 }  // namespace
 
 VoxelExportStats writeFieldVdb(const std::filesystem::path& path, const core::TensorField& field,
@@ -89,38 +180,9 @@ VoxelExportStats writeFieldVdb(const std::filesystem::path& path, const core::Te
   initializeOpenVdb();
 
   const std::vector<GridPlan> plans = planGrids(quantities, options.tensorName);
-  const int channels = quantities.channelCount();
   int floatGrids = 0, vectorGrids = 0;
   for (const auto& p : plans) (p.vector ? vectorGrids : floatGrids)++;
-
-  const auto transform = openvdb::math::Transform::createLinearTransform(lattice.voxelSize);
-  transform->postTranslate(
-      openvdb::Vec3d(lattice.origin.x(), lattice.origin.y(), lattice.origin.z()));
-  std::vector<openvdb::FloatGrid::Ptr> floatOut;
-  std::vector<openvdb::Vec3SGrid::Ptr> vectorOut;
-  openvdb::GridPtrVec grids;
-  for (const auto& p : plans) {
-    openvdb::GridBase::Ptr grid;
-    if (p.vector) {
-      auto g = openvdb::Vec3SGrid::create(openvdb::Vec3s(0, 0, 0));
-      g->setVectorType(openvdb::VEC_INVARIANT);
-      vectorOut.push_back(g);
-      grid = g;
-    } else {
-      auto g = openvdb::FloatGrid::create(0.0f);
-      floatOut.push_back(g);
-      grid = g;
-    }
-    grid->setName(p.name);
-    grid->setTransform(transform->copy());
-    grid->setSaveFloatAsHalf(false);
-    grid->setGridClass(p.tensorDerived ? openvdb::GRID_UNKNOWN : openvdb::GRID_FOG_VOLUME);
-    if (p.tensorDerived) {
-      grid->insertMeta("tensor_components", openvdb::StringMetadata("xx,yy,zz,xy,yz,xz"));
-    }
-    if (!p.component.empty()) grid->insertMeta("component", openvdb::StringMetadata(p.component));
-    grids.push_back(grid);
-  }
+  OutputGrids grids = makeGrids(plans, lattice);
 
   // Leaf blocks covering the lattice, processed one z-layer of blocks at a time.
   const std::array<int, 3> blockMin{leafBlock(lattice.min[0]), leafBlock(lattice.min[1]),
@@ -137,50 +199,17 @@ VoxelExportStats writeFieldVdb(const std::filesystem::path& path, const core::Te
     progress.report(double(bz - blockMin[2]) / layers, "sampling voxels");
     tbb::parallel_for(0, nbx * nby, [&](int b) {
       if (progress.cancelled()) return;
-      BlockLeaves& out = layer[b];
       const openvdb::Coord leafOrigin((blockMin[0] + b % nbx) * kLeafDim,
                                       (blockMin[1] + b / nbx) * kLeafDim, bz * kLeafDim);
-      std::vector<float> values(channels);
-      RowSampler sampler(field);
-      for (int k = std::max(leafOrigin.z(), lattice.min[2]);
-           k <= std::min(leafOrigin.z() + kLeafDim - 1, lattice.max[2]); ++k) {
-        for (int j = std::max(leafOrigin.y(), lattice.min[1]);
-             j <= std::min(leafOrigin.y() + kLeafDim - 1, lattice.max[1]); ++j) {
-          for (int i = std::max(leafOrigin.x(), lattice.min[0]);
-               i <= std::min(leafOrigin.x() + kLeafDim - 1, lattice.max[0]); ++i) {
-            const core::Vec3 p = lattice.centre(i, j, k);
-            const VoxelSample sample = sampler(p);
-            if (!sample.inside()) continue;
-            if (out.active++ == 0) {
-              for (int g = 0; g < floatGrids; ++g)
-                out.floats.push_back(std::make_unique<FloatLeaf>(leafOrigin, 0.0f, false));
-              for (int g = 0; g < vectorGrids; ++g) {
-                out.vectors.push_back(
-                    std::make_unique<Vec3Leaf>(leafOrigin, openvdb::Vec3s(0, 0, 0), false));
-              }
-            }
-            quantities.evaluate(p, sample, values.data());
-            const openvdb::Index offset = FloatLeaf::coordToOffset(openvdb::Coord(i, j, k));
-            int f = 0, v = 0;
-            for (const auto& plan : plans) {
-              const float* c = values.data() + plan.firstChannel;
-              if (plan.vector) {
-                out.vectors[v++]->setValueOn(offset, openvdb::Vec3s(c[0], c[1], c[2]));
-              } else {
-                out.floats[f++]->setValueOn(offset, c[0]);
-              }
-            }
-          }
-        }
-      }
+      sampleBlock(field, quantities, plans, lattice, leafOrigin, floatGrids, vectorGrids, layer[b]);
     });
     progress.throwIfCancelled();
     // Serial insertion in block order: the trees do not depend on the thread count.
     for (auto& block : layer) {
       for (int g = 0; g < int(block.floats.size()); ++g)
-        floatOut[g]->tree().addLeaf(block.floats[g].release());
+        grids.floats[g]->tree().addLeaf(block.floats[g].release());
       for (int g = 0; g < int(block.vectors.size()); ++g)
-        vectorOut[g]->tree().addLeaf(block.vectors[g].release());
+        grids.vectors[g]->tree().addLeaf(block.vectors[g].release());
       stats.activeVoxels += block.active;
       block = BlockLeaves();
     }
@@ -188,18 +217,10 @@ VoxelExportStats writeFieldVdb(const std::filesystem::path& path, const core::Te
   progress.throwIfCancelled();
   progress.report(1.0, "writing");
 
-  openvdb::MetaMap fileMeta;
-  fileMeta.insertMeta("generator", openvdb::StringMetadata(options.generator));
-  if (!options.source.empty()) {
-    fileMeta.insertMeta("source", openvdb::StringMetadata(options.source));
-  }
-  fileMeta.insertMeta("tensor_components", openvdb::StringMetadata("xx,yy,zz,xy,yz,xz"));
-  fileMeta.insertMeta("voxel_convention",
-                      openvdb::StringMetadata("voxel (i,j,k) is centred on world = origin + "
-                                              "voxelSize * (i,j,k)"));
+  const openvdb::MetaMap fileMeta = fileMetadata(options);
   writeAtomically(path, [&](OutputFile& out) {
     try {
-      SeekableVdbArchive().write(out.stream(), grids, fileMeta);
+      SeekableVdbArchive().write(out.stream(), grids.all, fileMeta);
     } catch (const openvdb::Exception& e) {
       throw core::Error("cannot write VDB file '" + path.string() + "': " + e.what());
     }

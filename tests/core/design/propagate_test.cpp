@@ -11,8 +11,8 @@
 #include "core/design/boundary_conforming.h"
 #include "core/error.h"
 #include "core/solve/laplacian.h"
-#include "io/tetgen/tetgen_mesher.h"
 #include "tests/core/solve/solver_test_meshes.h"
+#include "tests/support/solid_meshes.h"
 
 namespace tfd::core {
 namespace {
@@ -62,7 +62,7 @@ double harmonicDefect(const TensorField& f, const std::vector<unsigned char>& fi
 }
 
 TEST(Propagate, BoundaryConformingFieldHasTheNormalAsEigenvectorEverywhereOnTheBoundary) {
-  const auto mesh = io::meshPrimitive(core::PrimitiveShape::Sphere, 20000);
+  const auto mesh = test::mappedBall(15);  // 20250 tets
   const ConstraintSet set = wedgeAndTensor();
   const PropagateResult result = propagate(mesh, set);
   const FixedValues design = applyConstraints(*mesh, set);
@@ -122,7 +122,7 @@ TEST(Propagate, ConformToNormalIsEquation4) {
 }
 
 TEST(Propagate, CurvatureBoundaryOnASphereGivesTheLiftedUmbilicTensor) {
-  const auto mesh = io::meshPrimitive(PrimitiveSpec{PrimitiveShape::Sphere, 2.0}, 20000);
+  const auto mesh = test::mappedBall(15, 2.0);
   PropagateOptions options;
   options.curvatureBoundary = true;
   options.normalEigenvalue = 1.5;
@@ -160,7 +160,9 @@ TEST(Propagate, ErrorsAreClear) {
 }
 
 TEST(Propagate, BitwiseEqualForOneAndTwoThreads) {
-  const auto mesh = io::meshPrimitive(core::PrimitiveShape::DoubleTorus, 15000);
+  const auto mesh = test::carvedSolid(
+      30, Vec3(-3, -1.5, -0.5), Vec3(3, 1.5, 0.5),
+      [](const Vec3& p) { return test::insideDoubleTorus(p); }, 0.15);
   ConstraintSet set;
   PointElement p;
   p.field = makeDegenerateLinearization(Vec3(2.2, 0.0, 0.0), Mat3::Identity(),

@@ -12,8 +12,8 @@
 #include "core/error.h"
 #include "core/linalg/amg.h"
 #include "core/solve/laplacian.h"
-#include "io/tetgen/tetgen_mesher.h"
 #include "tests/core/solve/solver_test_meshes.h"
+#include "tests/support/solid_meshes.h"
 
 namespace tfd::core {
 namespace {
@@ -49,12 +49,14 @@ TEST(HarmonicSolver, ReproducesLinearFieldsOnBoxMeshes) {
   EXPECT_LT(linearReproductionError(jitteredBox(10)), 1e-8);
 }
 
-TEST(HarmonicSolver, ReproducesLinearFieldsOnTetGenMeshesOfEachSolid) {
-  for (const PrimitiveShape shape : {PrimitiveShape::Sphere, PrimitiveShape::Box,
-                                     PrimitiveShape::Torus, PrimitiveShape::DoubleTorus}) {
-    const auto mesh = io::meshPrimitive(shape, 6000);
-    EXPECT_LT(linearReproductionError(mesh), 1e-8) << int(shape);
-  }
+TEST(HarmonicSolver, ReproducesLinearFieldsOnMeshesOfEachSolid) {
+  // Ball and torus with curved boundaries, a carved (jittered, non-convex, genus-2) double torus.
+  EXPECT_LT(linearReproductionError(test::mappedBall(10)), 1e-8) << "ball";
+  EXPECT_LT(linearReproductionError(test::mappedTorus(24, 4)), 1e-8) << "torus";
+  const auto doubleTorus = test::carvedSolid(
+      24, Vec3(-3, -1.5, -0.5), Vec3(3, 1.5, 0.5),
+      [](const Vec3& p) { return test::insideDoubleTorus(p); }, 0.15);
+  EXPECT_LT(linearReproductionError(doubleTorus), 1e-8) << "double torus";
 }
 
 TEST(HarmonicSolver, AgreesWithADirectSparseCholeskySolve) {
@@ -168,7 +170,7 @@ TEST(HarmonicSolver, WarmStartFromTheSolutionNeedsNoIterations) {
 }
 
 TEST(HarmonicSolver, BitwiseEqualForOneAndTwoThreads) {
-  const auto mesh = io::meshPrimitive(core::PrimitiveShape::Torus, 20000);
+  const auto mesh = test::mappedTorus(48, 7);  // 14112 tets
   std::vector<unsigned char> fixed(mesh->vertexCount(), 0);
   std::vector<Tensor> values(mesh->vertexCount());
   for (int v = 0; v < static_cast<int>(mesh->vertexCount()); v += 211) {
@@ -277,7 +279,7 @@ TEST(HarmonicSolver, CancellationStopsTheSolve) {
 }
 
 TEST(HarmonicSolver, MultigridHierarchyIsSmallAndCoarsens) {
-  const auto mesh = io::meshPrimitive(core::PrimitiveShape::Sphere, 30000);
+  const auto mesh = test::mappedBall(17);  // 29478 tets
   std::vector<unsigned char> fixed(mesh->vertexCount(), 0);
   fixed[0] = 1;
   const HarmonicSolver solver(mesh, fixed);

@@ -1,6 +1,6 @@
-// Boundary curvature tensor (core/surface/surface_curvature.h, Rusinkiewicz 2004) on TetGen meshes
-// of a sphere (umbilic, k = 1/r), a torus (principal directions along and around the tube) and a
-// box (flat faces).
+// Boundary curvature tensor (core/surface/surface_curvature.h, Rusinkiewicz 2004) on structured
+// meshes mapped onto a sphere (umbilic, k = 1/r), a torus (principal directions along and around
+// the tube) and a box (flat faces).
 #include "core/surface/surface_curvature.h"
 
 #include <gtest/gtest.h>
@@ -8,14 +8,14 @@
 #include <cmath>
 
 #include "core/structured_mesh.h"
-#include "io/tetgen/tetgen_mesher.h"
+#include "tests/support/solid_meshes.h"
 
 namespace tfd::core {
 namespace {
 
 TEST(SurfaceCurvature, SphereIsUmbilicWithCurvatureOneOverRadius) {
   const double r = 1.5;
-  const auto mesh = io::meshPrimitive(PrimitiveSpec{PrimitiveShape::Sphere, r}, 20000);
+  const auto mesh = test::mappedBall(15, r);
   const auto curvature = boundaryCurvatureTensors(*mesh);
   ASSERT_EQ(curvature.size(), mesh->boundaryVertices().size());
   double sumError = 0, worst = 0;
@@ -34,7 +34,7 @@ TEST(SurfaceCurvature, SphereIsUmbilicWithCurvatureOneOverRadius) {
 
 TEST(SurfaceCurvature, TorusPrincipalDirectionsRunAroundAndAlongTheTube) {
   const double R = 1.0, a = 0.4;
-  const auto mesh = io::meshPrimitive(core::PrimitiveShape::Torus, 40000);
+  const auto mesh = test::mappedTorus(96, 8, R, a);  // boundary vertices on the exact torus
   const auto curvature = boundaryCurvatureTensors(*mesh);
   int outer = 0, inner = 0;
   for (std::size_t i = 0; i < curvature.size(); ++i) {

@@ -6,7 +6,7 @@
 #include "core/error.h"
 #include "core/topology/curve_filter.h"
 #include "core/topology/extract_degenerate_curves.h"
-#include "io/tetgen/tetgen_mesher.h"
+#include "tests/support/solid_meshes.h"
 
 namespace tfd::core {
 namespace {
@@ -16,11 +16,11 @@ struct Designed {
   DegenerateCurves curves;
 };
 
-/// A TetGen ball with one L-wedge point element at the origin (its curve runs along z through
-/// the ball), propagated boundary-conforming.
+/// A ball (structured, mapped onto the sphere) with one L-wedge point element at the origin (its
+/// curve runs along z through the ball), propagated boundary-conforming.
 const Designed& designedBall() {
   static const Designed d = [] {
-    auto mesh = io::meshPrimitive(core::PrimitiveShape::Sphere, 30'000);
+    auto mesh = test::mappedBall(17);  // 29478 tets
     ConstraintSet set;
     PointElement e;
     e.degenerate = true;

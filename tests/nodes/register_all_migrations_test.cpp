@@ -1,8 +1,15 @@
 // Node typeVersion migrations of the registered types: files written before a parameter was
-// renamed or changed kind load with the same meaning and save as the current version.
+// renamed or changed kind load with the same meaning and save as the current version; a graph
+// file of format version 1 with every registered type at typeVersion 1 loads; and every
+// typeVersion of every registered type has a fixture (tests/data/graphs/nodes/, migrations/ or
+// an example) that loads.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -91,6 +98,55 @@ TEST(NodeMigrations, ATypeVersionNewerThanTheReaderIsRefused) {
     FAIL() << "loaded";
   } catch (const std::exception& e) {
     EXPECT_NE(std::string(e.what()).find("typeVersion 3"), std::string::npos) << e.what();
+  }
+}
+
+TEST(NodeMigrations, FormatVersion1FileWithEveryTypeLoads) {
+  const char* path = TFD_TEST_DATA_DIR "/graphs/nodes/every_type_v1.tfd.json";
+  const graph::Graph g = graph::loadGraphFile(path, registry());
+  std::set<std::string> types;
+  for (const auto& node : g.nodes()) types.insert(node.type().name());
+  for (const graph::NodeType* t : registry().types()) {
+    EXPECT_TRUE(types.count(t->name()))
+        << "node type " << t->name() << " is missing from " << path
+        << ": add a node of it at typeVersion 1 (format version 1: positions in \"layout\")";
+  }
+  // Meaning kept across both migrations (format 1 -> 2, typeVersion 1 -> 2).
+  EXPECT_EQ(std::get<std::string>(g.param("vtu", "encoding")), "appended");
+  EXPECT_EQ(std::get<Strings>(g.param("vdb", "quantities")), (Strings{"tensor", "eigenvalues"}));
+  EXPECT_EQ(std::get<Strings>(g.param("exr", "quantities")), (Strings{"eigenvectors"}));
+  EXPECT_EQ(std::get<std::string>(g.param("curves", "boundary_curves")), "drop");
+  const graph::Json saved = graph::graphToJson(g);
+  EXPECT_EQ(saved["formatVersion"], 2);
+  EXPECT_EQ(saved["nodes"]["smooth"]["ui"]["position"], graph::Json::parse("[750, 180]"));
+  EXPECT_FALSE(saved.contains("layout"));
+  const std::string text = graph::graphToText(g);
+  EXPECT_EQ(graph::graphToText(graph::parseGraph(text, registry(), "saved")), text);
+}
+
+TEST(NodeMigrations, EveryTypeVersionOfEveryTypeHasAFixtureThatLoads) {
+  namespace fs = std::filesystem;
+  std::vector<fs::path> files;
+  for (const char* dir : {TFD_TEST_DATA_DIR "/graphs/nodes", TFD_TEST_DATA_DIR "/graphs/migrations",
+                          TFD_SOURCE_DIR "/examples"}) {
+    for (const auto& entry : fs::directory_iterator(dir))
+      if (entry.path().string().ends_with(".tfd.json")) files.push_back(entry.path());
+  }
+  std::map<std::string, std::set<int>> seen;
+  for (const fs::path& file : files) {
+    EXPECT_NO_THROW(graph::loadGraphFile(file, registry())) << file;
+    std::ifstream in(file);
+    const graph::Json doc = graph::Json::parse(in);
+    for (const auto& [name, node] : doc["nodes"].items())
+      seen[node["type"].get<std::string>()].insert(node["typeVersion"].get<int>());
+  }
+  for (const graph::NodeType* t : registry().types()) {
+    for (int v = 1; v <= t->version(); ++v) {
+      EXPECT_TRUE(seen[t->name()].count(v))
+          << t->name() << " typeVersion " << v
+          << " has no fixture: add a node of it to a file in tests/data/graphs/nodes/ (or "
+             "migrations/ for a migration with its own test)";
+    }
   }
 }
 

@@ -9,7 +9,7 @@
 #include "core/design/propagate.h"
 #include "core/edit/local_smooth.h"
 #include "core/topology/extract_degenerate_curves.h"
-#include "io/tetgen/tetgen_mesher.h"
+#include "tests/support/solid_meshes.h"
 
 namespace tfd::core {
 namespace {
@@ -17,7 +17,7 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 
 const std::shared_ptr<const TetMesh>& ball() {
-  static const auto mesh = io::meshPrimitive(core::PrimitiveShape::Sphere, 40000);
+  static const auto mesh = test::mappedBall(19);  // 41154 tets
   return mesh;
 }
 
