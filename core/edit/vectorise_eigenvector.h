@@ -1,0 +1,47 @@
+#pragma once
+// Vectorising the non-repeating eigenvector in a region (paper §6.2, "Step 2"; §6.3): "We
+// first choose a vertex in the region M and arbitrarily choose a forward direction from two of
+// its unit non-repeating eigenvectors. We then parallel transport this vector to all the other
+// vertices in M and use it to choose the forward direction of each of the non-repeating
+// eigenvectors." In a simply connected region where the eigenvector's line field has no
+// singularity it is a vector field (Markus 1955), and this orientation finds it.
+//
+// Inputs: a field, the region's tets, and the L/P type of the degenerate points the edit is
+// about. Output: one unit direction per region vertex. Transport in R³ is the identity, so a
+// vertex takes the sign that agrees with the already oriented neighbour it is reached from.
+// Vertices are reached along a maximum spanning tree of the weights |e_u·e_v| (Prim's order,
+// ties by vertex id): signs are decided across the best-aligned edges first, so the result does
+// not depend on a traversal that crosses nearly perpendicular eigenvectors early. The seed is
+// the vertex whose eigenvalue is most isolated (relative to ‖A‖), oriented so its largest
+// component is positive. Deterministic for any thread count (the eigen-decompositions run in
+// parallel, one slot per vertex; the tree is sequential).
+#include <vector>
+
+#include "core/degeneracy.h"
+#include "core/tensor_field.h"
+
+namespace tfd::core {
+
+/// Which eigenvector does not repeat at a degenerate point of `type`: the major one for
+/// Linear (λ2 = λ3), the minor one for Planar (λ1 = λ2).
+/// The non-repeating eigenvector made a vector field over the vertices of `regionTets` by
+/// parallel transport from a seed vertex: each vertex's sign agrees with an already oriented
+/// neighbour. Throws core::Error when the region is not connected.
+struct VectorisedEigenvector {
+  std::vector<int> vertices;     ///< region vertices, ascending
+  std::vector<Vec3> directions;  ///< unit, one per entry of `vertices`
+  int signConflicts = 0;         ///< region edges whose two directions disagree in sign (0 when the
+                                 ///< region holds no degenerate point)
+  int seed = -1;                 ///< mesh id of the seed vertex
+};
+
+/// Column of EigenDecomposition::vectors that does not repeat at a degenerate point of `type`
+/// (0, the major eigenvector, for Linear; 2, the minor one, for Planar).
+int nonRepeatingColumn(DegenerateType type);
+
+/// Throws core::Error for an empty region, a tet id out of range, or a region whose vertices
+/// are not connected through its edges.
+VectorisedEigenvector vectoriseEigenvector(const TensorField& field,
+                                           const std::vector<int>& regionTets, DegenerateType type);
+
+}  // namespace tfd::core

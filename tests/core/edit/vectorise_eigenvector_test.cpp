@@ -1,0 +1,138 @@
+// Vectorising the non-repeating eigenvector in a region (core/edit/vectorise_eigenvector.h).
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+
+#include "core/edit/vectorise_eigenvector.h"
+#include "core/error.h"
+#include "core/structured_mesh.h"
+
+namespace tfd::core {
+namespace {
+
+/// R(p) diag(λ) R(p)ᵀ with a rotation that turns the frame by up to ~170° across the box: the
+/// major eigenvector R(p) x̂ changes the sign of every coordinate somewhere, so no fixed
+/// reference direction orients it, yet it is a smooth vector field.
+Mat3 frameAt(const Vec3& p) {
+  return (Eigen::AngleAxisd(1.4 * p.x() + 0.3 * p.z(), Vec3::UnitZ()) *
+          Eigen::AngleAxisd(0.9 * p.y(), Vec3::UnitX()))
+      .toRotationMatrix();
+}
+
+TensorField rotatingField(std::shared_ptr<const TetMesh> mesh, const Vec3& lambda) {
+  std::vector<Tensor> values;
+  for (const Vec3& p : mesh->positions()) {
+    const Mat3 r = frameAt(p);
+    values.push_back(Tensor::fromMatrix(r * lambda.asDiagonal() * r.transpose()));
+  }
+  return TensorField(mesh, values);
+}
+
+std::vector<int> allTets(const TetMesh& mesh) {
+  std::vector<int> tets(mesh.tetCount());
+  for (std::size_t t = 0; t < tets.size(); ++t) tets[t] = static_cast<int>(t);
+  return tets;
+}
+
+/// Tets whose centroid lies within `radius` of the z axis.
+std::vector<int> tetsNearZAxis(const TetMesh& mesh, double radius) {
+  std::vector<int> out;
+  for (std::size_t t = 0; t < mesh.tetCount(); ++t) {
+    Vec3 c = Vec3::Zero();
+    for (int v : mesh.tets()[t]) c += mesh.positions()[v] / 4;
+    if (std::hypot(c.x(), c.y()) < radius) out.push_back(static_cast<int>(t));
+  }
+  return out;
+}
+
+TEST(VectoriseEigenvector, SmoothFieldHasNoConflictAndFollowsTheEigenvectorUpToSign) {
+  const auto mesh = makeBoxMesh(8, 8, 8, Vec3::Constant(-1.5), Vec3::Constant(1.5));
+  for (DegenerateType type : {DegenerateType::Linear, DegenerateType::Planar}) {
+    const TensorField field = rotatingField(mesh, Vec3(2.0, -0.5, -1.5));
+    const VectorisedEigenvector v = vectoriseEigenvector(field, allTets(*mesh), type);
+    ASSERT_EQ(v.vertices.size(), mesh->vertexCount());
+    EXPECT_EQ(v.signConflicts, 0);
+    int positiveX = 0;
+    for (std::size_t i = 0; i < v.vertices.size(); ++i) {
+      EXPECT_EQ(v.vertices[i], static_cast<int>(i));
+      const Vec3 truth = frameAt(mesh->positions()[i]).col(type == DegenerateType::Linear ? 0 : 2);
+      EXPECT_NEAR(v.directions[i].norm(), 1, 1e-14);
+      EXPECT_GT(std::abs(v.directions[i].dot(truth)), 1 - 1e-12);
+      positiveX += v.directions[i].x() > 0;
+    }
+    // The field really turns: a fixed reference direction would have conflicts.
+    EXPECT_GT(positiveX, 0);
+    EXPECT_LT(positiveX, static_cast<int>(mesh->vertexCount()));
+    // The orientation is the truth's up to one global sign: every edge agrees with it.
+    const double s =
+        v.directions[0].dot(frameAt(mesh->positions()[0]).col(nonRepeatingColumn(type)));
+    for (std::size_t i = 0; i < v.vertices.size(); ++i) {
+      const Vec3 truth = frameAt(mesh->positions()[i]).col(nonRepeatingColumn(type));
+      EXPECT_GT(s * v.directions[i].dot(truth), 0) << "vertex " << i;
+    }
+  }
+}
+
+/// F3 of the algorithms note: a P-type wedge along the z axis, A = [[1+x, y, 0], [y, 1−x, 0],
+/// [0, 0, −2]]. Its major eigenvector turns by π around the axis (index ½); its minor one is ẑ.
+TensorField planarWedge(std::shared_ptr<const TetMesh> mesh) {
+  std::vector<Tensor> values;
+  for (const Vec3& p : mesh->positions()) {
+    values.push_back(Tensor{1 + p.x(), 1 - p.x(), -2, p.y(), 0, 0});
+  }
+  return TensorField(mesh, values);
+}
+
+TEST(VectoriseEigenvector, RegionAroundADegenerateCurveHasConflictsOnlyForTheRepeatedVector) {
+  // Offset so that no vertex lies on the curve x = y = 0.
+  const auto mesh = makeBoxMesh(10, 10, 4, Vec3(-1.03, -0.97, -1), Vec3(0.97, 1.03, 1));
+  const TensorField field = planarWedge(mesh);
+  const std::vector<int> region = tetsNearZAxis(*mesh, 0.7);
+  const VectorisedEigenvector major = vectoriseEigenvector(field, region, DegenerateType::Linear);
+  EXPECT_GT(major.signConflicts, 0) << "the major eigenvector cannot be oriented around a wedge";
+  const VectorisedEigenvector minor = vectoriseEigenvector(field, region, DegenerateType::Planar);
+  EXPECT_EQ(minor.signConflicts, 0) << "the non-repeating (minor) eigenvector can";
+  for (const Vec3& d : minor.directions) EXPECT_GT(std::abs(d.z()), 1 - 1e-12);
+  // A region beside the curve, not around it: the major eigenvector orients fine there.
+  std::vector<int> beside;
+  for (int t : tetsNearZAxis(*mesh, 10)) {
+    bool right = true;
+    for (int v : mesh->tets()[t]) right = right && mesh->positions()[v].x() > 0.2;
+    if (right) beside.push_back(t);
+  }
+  ASSERT_FALSE(beside.empty());
+  EXPECT_EQ(vectoriseEigenvector(field, beside, DegenerateType::Linear).signConflicts, 0);
+}
+
+TEST(VectoriseEigenvector, RefusesDisconnectedOrInvalidRegions) {
+  const auto mesh = makeBoxMesh(4, 1, 1, Vec3(0, 0, 0), Vec3(4, 1, 1));
+  const TensorField field = rotatingField(mesh, Vec3(2.0, -0.5, -1.5));
+  // Tets of the first and the last cube share no vertex.
+  const std::vector<int> split = {0, 1, 2, 18, 19};
+  try {
+    vectoriseEigenvector(field, split, DegenerateType::Linear);
+    FAIL() << "a disconnected region was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("not connected"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(vectoriseEigenvector(field, {}, DegenerateType::Linear), Error);
+  EXPECT_THROW(vectoriseEigenvector(field, {0, 24}, DegenerateType::Linear), Error);
+}
+
+TEST(VectoriseEigenvector, SameResultForOneAndTwoThreads) {
+  const auto mesh = makeBoxMesh(10, 10, 10, Vec3::Constant(-1), Vec3::Constant(1));
+  const TensorField field = rotatingField(mesh, Vec3(1.0, 0.7, -1.7));
+  const auto run = [&](int threads) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    return vectoriseEigenvector(field, allTets(*mesh), DegenerateType::Linear);
+  };
+  const VectorisedEigenvector a = run(1), b = run(2);
+  ASSERT_EQ(a.directions.size(), b.directions.size());
+  for (std::size_t i = 0; i < a.directions.size(); ++i) EXPECT_EQ(a.directions[i], b.directions[i]);
+  EXPECT_EQ(a.signConflicts, b.signConflicts);
+}
+
+}  // namespace
+}  // namespace tfd::core
