@@ -8,7 +8,7 @@
 #include "graph/graph_file.h"
 #include "graph/node_registry.h"
 #include "io/file_bytes.h"
-#include "io/mesh/surface_readers.h"
+#include "io/mesh_file.h"
 #include "nodes/register_all.h"
 #include "nodes/value_types.h"
 #include "tests/support/temp_dir.h"
