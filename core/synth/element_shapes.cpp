@@ -52,7 +52,7 @@ ElementShape normalizedElement(const SurfaceMesh& mesh, const char* what) {
 
 ElementShape builtinStick() {
   constexpr int n = 8;
-  constexpr double radius = 0.035;
+  constexpr double radius = 0.045;
   SurfaceMesh m;
   for (double x : {-0.5, 0.5})
     for (int i = 0; i < n; ++i) {

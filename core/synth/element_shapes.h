@@ -18,7 +18,7 @@ struct ElementShape {
 /// core::Error naming `what` for a mesh with no triangles or a zero-size bounding box.
 ElementShape normalizedElement(const SurfaceMesh& mesh, const char* what);
 
-/// A wooden stick: an octagonal prism of length 1 along x, diameter 0.07, closed at both ends.
+/// A wooden stick: an octagonal prism of length 1 along x, diameter 0.09, closed at both ends.
 ElementShape builtinStick();
 /// A leaf: a closed thin lens in the xy plane (length 1 along x, width 0.45 along y, at most
 /// 0.04 thick along z), symmetric under the half-turns about x, y and z (box symmetry).
