@@ -17,6 +17,8 @@ void registerExportVtu(graph::NodeRegistry&);
 void registerExportVdb(graph::NodeRegistry&);
 void registerExportExr(graph::NodeRegistry&);
 void registerExportCurves(graph::NodeRegistry&);
+void registerElementSynthesis(graph::NodeRegistry&);
+void registerExportMesh(graph::NodeRegistry&);
 
 void registerAll(graph::NodeRegistry& registry) {
   registerTetMesh(registry);
@@ -31,6 +33,8 @@ void registerAll(graph::NodeRegistry& registry) {
   registerExportVdb(registry);
   registerExportExr(registry);
   registerExportCurves(registry);
+  registerElementSynthesis(registry);
+  registerExportMesh(registry);
 }
 
 }  // namespace tfd::nodes
