@@ -70,8 +70,10 @@ MainWindow::~MainWindow() {
   disconnect(scene_, nullptr, this, nullptr);
   delete cook_;
   cook_ = nullptr;
-  const QList<QObject*> children = findChildren<QObject*>(Qt::FindDirectChildrenOnly);
-  qDeleteAll(children);
+  delete takeCentralWidget();
+  qDeleteAll(findChildren<QDockWidget*>(Qt::FindDirectChildrenOnly));
+  delete scene_;
+  delete files_;
 }
 
 void MainWindow::buildLayout() {

@@ -21,7 +21,7 @@ namespace tfd::ui {
 namespace {
 
 QAction* menuAction(QMenu* menu, const QString& text, const QKeySequence& key,
-                   const std::function<void()>& run) {
+                    const std::function<void()>& run) {
   QAction* a = menu->addAction(text);
   if (!key.isEmpty()) a->setShortcut(key);
   QObject::connect(a, &QAction::triggered, menu, [run] { run(); });
@@ -56,9 +56,9 @@ void MainWindow::buildMenus() {
 
   QMenu* view = menuBar()->addMenu("&View");
   menuAction(view, "Frame All Nodes", QKeySequence("Ctrl+Shift+A"),
-            [this] { canvasView_->frameAll(); });
+             [this] { canvasView_->frameAll(); });
   menuAction(view, "Frame Viewport", QKeySequence("Ctrl+Shift+F"),
-            [this] { viewport_->view()->frameAll(); });
+             [this] { viewport_->view()->frameAll(); });
   menuAction(view, "Display Selected Node", QKeySequence("Ctrl+T"), [this] {
     const auto selected = scene_->selectedNodeNames();
     if (selected.size() == 1) document_->setDisplayNode(selected.front());
@@ -70,7 +70,7 @@ void MainWindow::buildMenus() {
 
   QMenu* help = menuBar()->addMenu("&Help");
   menuAction(help, "&Shortcuts", QKeySequence::HelpContents,
-            [this] { QMessageBox::information(this, "Shortcuts", kShortcutsHelp); });
+             [this] { QMessageBox::information(this, "Shortcuts", kShortcutsHelp); });
 }
 
 void MainWindow::buildEditMenu(QMenu* edit) {
@@ -124,7 +124,7 @@ void MainWindow::buildCookMenu(QMenu* cook) {
   connect(autoCook, &QAction::toggled, cook_, &CookController::setAutoCook);
   menuAction(cook, "Cook &Now", QKeySequence("F5"), [this] { cook_->requestCook(); });
   menuAction(cook, "&Write Outputs", QKeySequence("Ctrl+Shift+W"),
-            [this] { cook_->writeOutputs(); });
+             [this] { cook_->writeOutputs(); });
   menuAction(cook, "&Cancel", QKeySequence("Esc"), [this] { cook_->cancel(); });
 }
 

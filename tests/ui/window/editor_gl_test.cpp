@@ -25,6 +25,7 @@
 #include "ui/cook/cook_controller.h"
 #include "ui/document/graph_document.h"
 #include "ui/viewport/viewport_panel.h"
+#include "ui/window/info_panel.h"
 #include "ui/window/main_window.h"
 
 namespace tfd::ui {
@@ -153,6 +154,10 @@ TEST_F(Editor, AFailingNodeIsRedAndDownstreamSaysSo) {
   const QImage canvas = window->canvasView()->grab().toImage();
   test::keepImage(toImage(canvas), "editor_canvas_error");
   EXPECT_GT(pixelsNear(canvas, style::errorRed()), 20);
+  EXPECT_TRUE(window->info()->toPlainText().contains("missing.obj"))
+      << "the info panel shows the selected node's error: "
+      << window->info()->toPlainText().toStdString();
+  test::keepImage(toImage(window->grab().toImage()), "editor_window_error");
 }
 
 TEST_F(Editor, AClickOnADrawnCurveFillsTheSelectedNodesPick) {
