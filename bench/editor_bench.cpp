@@ -11,6 +11,8 @@
 //   BM_EditorMemory1M: the main window opens a graph reading a 998,250-tet mesh (.node/.ele),
 //       with a FieldExpression field and its degenerate curves on display; reports the
 //       process's resident memory before and after (MB), and the time to the first frame.
+//       Run it alone (--benchmark_filter=EditorMemory) so earlier benchmarks' memory does not
+//       count.
 #include <benchmark/benchmark.h>
 
 #include <QApplication>
@@ -96,7 +98,12 @@ void BM_ViewportFrame(benchmark::State& state) {
   state.SetLabel(render::Renderer::contextDescription());
   renderer.release();
 }
-BENCHMARK(BM_ViewportFrame)->Arg(30)->Arg(55)->Unit(benchmark::kMillisecond)->MinTime(3.0);
+BENCHMARK(BM_ViewportFrame)
+    ->Arg(30)
+    ->Arg(55)
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(3.0)
+    ->UseRealTime();
 
 double residentMb(const char* key) {
   std::ifstream in("/proc/self/status");
@@ -120,6 +127,22 @@ double openToFirstFrame(ui::MainWindow& window, const fs::path& graph) {
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
   return -1;
+}
+
+/// "" when every node of the last cook succeeded, else the first failure.
+std::string firstFailure(ui::MainWindow& window) {
+  for (const graph::NodeReport& r : window.cook().lastResult().reports)
+    if (r.state == graph::NodeState::Failed || r.state == graph::NodeState::UpstreamFailed)
+      return r.node + " failed" + (r.messages.empty() ? "" : ": " + r.messages.front().text);
+  return {};
+}
+
+void reportDrawn(benchmark::State& state, ui::MainWindow& window) {
+  const render::Scene& scene = window.viewport()->view()->scene();
+  state.counters["curve_segments"] = double(scene.curves.segmentCount());
+  state.counters["boundary_triangles"] = double(scene.boundary.indices.size() / 3);
+  if (const std::string failure = firstFailure(window); !failure.empty())
+    state.SkipWithError(failure.c_str());
 }
 
 struct EditorFixture {
@@ -148,6 +171,7 @@ void BM_OpenDefaultToFirstFrame(benchmark::State& state) {
         openToFirstFrame(*f.window, fs::path(TFD_SOURCE_DIR) / "examples" / "default.tfd.json");
     if (s < 0) state.SkipWithError("the example did not cook and draw in 10 minutes");
     state.SetIterationTime(s);
+    reportDrawn(state, *f.window);
   }
 }
 BENCHMARK(BM_OpenDefaultToFirstFrame)
@@ -178,6 +202,7 @@ void BM_EditorMemory1M(benchmark::State& state) {
     const double s = openToFirstFrame(*f.window, dir / "memory.tfd.json");
     if (s < 0) state.SkipWithError("the graph did not cook and draw in 10 minutes");
     state.SetIterationTime(s);
+    reportDrawn(state, *f.window);
     state.counters["rss_empty_editor_MB"] = before;
     state.counters["rss_loaded_MB"] = residentMb("VmRSS:");
     state.counters["peak_MB"] = residentMb("VmHWM:");
