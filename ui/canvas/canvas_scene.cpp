@@ -99,10 +99,12 @@ std::vector<graph::Link> CanvasScene::selectedLinks() const {
 }
 
 void CanvasScene::selectNodes(const std::vector<std::string>& names) {
-  const QSignalBlocker block(this);
-  clearSelection();
-  for (const std::string& n : names)
-    if (NodeItem* item = nodeItem(n)) item->setSelected(true);
+  {
+    const QSignalBlocker block(this);  // one notification for the whole change, below
+    clearSelection();
+    for (const std::string& n : names)
+      if (NodeItem* item = nodeItem(n)) item->setSelected(true);
+  }
   emit selectedNodesChanged();
 }
 
