@@ -39,7 +39,10 @@ std::string formatRows(const Rows& rows) {
   for (const auto& [label, value] : rows) width = std::max(width, label.size());
   std::string out;
   for (const auto& [label, value] : rows) {
-    out += label + ":" + std::string(width - label.size() + 1, ' ') + value + "\n";
+    // An empty label continues the row above (a list of values under one label).
+    out += label.empty() ? std::string(width + 2, ' ')
+                         : label + ":" + std::string(width - label.size() + 1, ' ');
+    out += value + "\n";
   }
   return out;
 }

@@ -10,7 +10,9 @@ void registerFileDescribers(FileDescribers& describers, const graph::NodeRegistr
                    return describeGraphFile(file, out, registry);
                  });
   describers.add({".off", ".obj", ".ply", ".stl"}, "surface mesh", describeMesh);
-  describers.add({".node", ".ele", ".msh", ".vtu"}, "tet mesh", describeMesh);
+  describers.add({".node", ".ele", ".msh"}, "tet mesh", describeMesh);
+  describers.add({".vtu"}, "tet mesh (VTK)", describeVtu);
+  describers.add({".vtp"}, "VTK polydata", describeVtp);
   describers.add({".vdb"}, "OpenVDB volume", describeVdb);
   describers.add({".exr"}, "OpenEXR image", describeExr);
   describers.add({".json"}, "degenerate curves", describeCurvesJson);

@@ -96,7 +96,9 @@ void writeCurvesVtp(const std::filesystem::path& path, const DegenerateCurves& c
                       {"NumberOfLines", std::to_string(curves.size())},
                       {"NumberOfStrips", "0"},
                       {"NumberOfPolys", "0"}});
-  xml.begin("PointData", {{"Scalars", "pattern"}, {"Vectors", "tangent"}});
+  // `colour` (Fig. 5 RGB) is the active scalars, so ParaView colours the curves as the paper
+  // does when the file is opened; `pattern` keeps the per-point pattern as numbers.
+  xml.begin("PointData", {{"Scalars", "colour"}, {"Vectors", "tangent"}});
   xml.dataArray("type", 1, std::span<const std::int32_t>(type));
   xml.dataArray("pattern", 1, std::span<const std::int32_t>(pattern));
   xml.dataArray("colour", 3, std::span<const std::uint8_t>(colour));
@@ -141,14 +143,18 @@ void writeCurvesObj(const std::filesystem::path& path, const DegenerateCurves& c
     s += std::to_string(c.id);
     s += '_';
     s += core::toString(c.type);
-    s += "\nl";
-    const auto index = [&](std::size_t i) {
-      s += ' ';
-      s += std::to_string(i);
-    };
-    for (std::size_t i = 0; i < n; ++i) index(base + i);
-    if (c.closed && n > 1) index(base);
     s += '\n';
+    // One two-point `l` element per segment: Blender's importer (3.4) keeps only the first
+    // segment of a longer `l` element; every OBJ reader takes these.
+    const auto segment = [&](std::size_t a, std::size_t b) {
+      s += "l ";
+      s += std::to_string(a);
+      s += ' ';
+      s += std::to_string(b);
+      s += '\n';
+    };
+    for (std::size_t i = 0; i + 1 < n; ++i) segment(base + i, base + i + 1);
+    if (c.closed && n > 2) segment(base + n - 1, base);
     base += n;
   }
   writeText(path, s);

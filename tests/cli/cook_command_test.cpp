@@ -195,12 +195,19 @@ TEST_F(CookNodes, OneAndTwoThreadsWriteIdenticalFiles) {
 
 TEST_F(CookNodes, InfoDescribesEveryExportedFile) {
   const fs::path out = dir.path() / "out";
-  ASSERT_EQ(cook(write(designGraph()), "--quiet --out " + shellQuote(out.string())).exitCode, 0);
+  ordered_json graph = designGraph();
+  graph["nodes"]["curves_vtp"] = node("ExportCurves", {{"path", "curves.vtp"}});
+  graph["links"].push_back({{"from", "topology.curves"}, {"to", "curves_vtp.curves"}});
+  ASSERT_EQ(cook(write(graph), "--quiet --out " + shellQuote(out.string())).exitCode, 0);
   const std::pair<const char*, std::vector<std::string>> expected[] = {
       {"field.vdb", {"format:", "OpenVDB volume", "grid T.xx:", "float", "metadata generator:"}},
       {"slices/f.000.exr", {"OpenEXR image", "T.xx (float)", "tfd.voxelSize:", "0.2"}},
       {"curves.json", {"tfd degenerate curves, version 1", "curves:", "transition points"}},
-      {"field.vtu", {"tet mesh", "tets:", "Euler characteristic 2"}}};
+      {"field.vtu",
+       {"tet mesh", "tets:", "Euler characteristic 2", "point arrays:",
+        "T (Float64 × 6, active Tensors)", "cell arrays:", "curve_colour (UInt8 × 3)"}},
+      {"curves.vtp",
+       {"VTK XML PolyData", "lines:", "colour (UInt8 × 3, active Scalars)", "cell arrays:"}}};
   for (const auto& [file, needles] : expected) {
     SCOPED_TRACE(file);
     const CliRun r = runCli("info " + shellQuote((out / file).string()));
