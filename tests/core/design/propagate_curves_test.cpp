@@ -17,7 +17,7 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 
 const std::shared_ptr<const TetMesh>& ball() {
-  static const auto mesh = test::mappedBall(19);  // 41154 tets
+  static const auto mesh = test::mappedBall(22);  // 63888 tets
   return mesh;
 }
 

@@ -15,7 +15,7 @@ namespace {
 
 TEST(SurfaceCurvature, SphereIsUmbilicWithCurvatureOneOverRadius) {
   const double r = 1.5;
-  const auto mesh = test::mappedBall(15, r);
+  const auto mesh = test::mappedBall(24, r);
   const auto curvature = boundaryCurvatureTensors(*mesh);
   ASSERT_EQ(curvature.size(), mesh->boundaryVertices().size());
   double sumError = 0, worst = 0;

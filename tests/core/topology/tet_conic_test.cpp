@@ -54,13 +54,15 @@ TEST(TetConic, EveryConicPointIsADegeneratePointOfTheField) {
 TEST(TetConic, TheDesignedDegenerateLineIsOnTheConic) {
   // A degenerate design element at the origin (paper Eq. 3) makes the origin a degenerate point
   // with the frame's z axis as non-repeated eigenvector: the conic passes through it there.
-  // Eq. 3 has no z derivative (not generic: no conic), so one is added; the origin keeps T0.
+  // Eq. 3 alone is not generic (its z derivative is zero and Tx, Ty act on the degenerate plane
+  // only, so the conic is a line pair): random parts are added to the three derivatives; the
+  // origin keeps T0 and so its degeneracy.
   std::mt19937_64 rng(17);
   for (const auto type : {DegenerateType::Linear, DegenerateType::Planar}) {
     const Mat3 frame = rotationFromEulerDegrees(Vec3(10, 20, 30));
     LocalLinearization l =
         makeDegenerateLinearization(Vec3::Zero(), frame, type, DegeneratePattern::Wedge);
-    l.jacobian[2] = testing::randomTraceless(rng, 0.3);
+    for (auto& j : l.jacobian) j += testing::randomTraceless(rng, 0.3);
     TetData t;
     t.corners = {Vec3(-0.2, -0.2, -0.2), Vec3(0.3, -0.1, -0.1), Vec3(-0.1, 0.3, -0.1),
                  Vec3(-0.1, -0.1, 0.3)};
