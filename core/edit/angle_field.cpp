@@ -1,0 +1,159 @@
+#include "core/edit/angle_field.h"
+
+#include <cmath>
+#include <deque>
+#include <string>
+
+#include "core/edit/reference_field.h"
+#include "core/error.h"
+#include "core/linalg/amg.h"
+#include "core/linalg/block_cg.h"
+#include "core/solve/laplacian.h"
+
+namespace tfd::core {
+namespace {
+
+/// Free vertices reachable from none held through free vertices make K_FF singular.
+void checkEveryFreePieceIsHeld(const RegionComplex& region, const std::vector<char>& held) {
+  const int n = static_cast<int>(region.vertices.size());
+  std::vector<char> reached(n, 0);
+  std::deque<int> queue;
+  for (int i = 0; i < n; ++i)
+    if (held[i]) reached[i] = 1, queue.push_back(i);
+  while (!queue.empty()) {
+    const int i = queue.front();
+    queue.pop_front();
+    for (int k = region.start[i]; k < region.start[i + 1]; ++k) {
+      const int j = region.neighbour[k];
+      if (!reached[j]) reached[j] = 1, queue.push_back(j);
+    }
+  }
+  for (int i = 0; i < n; ++i) {
+    if (!reached[i]) {
+      throw Error("angle field: free vertex " + std::to_string(region.vertices[i]) +
+                  " is not connected to any held vertex of the region");
+    }
+  }
+}
+
+template <int W>
+linalg::CgResult runCg(const linalg::CsrMatrix<double>& a, const std::vector<double>& b,
+                       std::vector<double>& x, const linalg::AmgPreconditioner& amg,
+                       const linalg::CgOptions& options, const Progress& progress) {
+  return linalg::blockPcg<W>(a, b.data(), x.data(), amg, options, progress);
+}
+
+}  // namespace
+
+std::vector<double> liftAngles(const RegionComplex& region, const std::vector<char>& held,
+                               const std::vector<double>& raw, const std::vector<double>& jumps,
+                               double period) {
+  const int n = static_cast<int>(region.vertices.size());
+  std::vector<double> theta(n, 0.0);
+  std::vector<char> assigned(n, 0);
+  int seed = -1;
+  for (int i = 0; i < n && seed < 0; ++i)
+    if (held[i]) seed = i;
+  if (seed < 0) return theta;
+  theta[seed] = raw[seed];
+  assigned[seed] = 1;
+  std::deque<int> queue{seed};
+  while (!queue.empty()) {
+    const int a = queue.front();
+    queue.pop_front();
+    for (int k = region.start[a]; k < region.start[a + 1]; ++k) {
+      const int b = region.neighbour[k];
+      if (assigned[b]) continue;
+      assigned[b] = 1;
+      const double predicted = theta[a] + orientedJump(jumps[region.neighbourEdge[k]], a, b);
+      if (held[b]) {
+        theta[b] = raw[b] + period * std::round((predicted - raw[b]) / period);  // Eq. 5
+        queue.push_front(b);
+      } else {
+        theta[b] = predicted;
+        queue.push_back(b);
+      }
+    }
+  }
+  return theta;
+}
+
+JumpSolveResult solveJumpLaplacian(const TetMesh& mesh, const RegionComplex& region,
+                                   const std::vector<char>& held, const std::vector<double>& jumps,
+                                   std::vector<double>& values, int width,
+                                   const JumpSolveOptions& options, const Progress& progress) {
+  const int n = static_cast<int>(region.vertices.size());
+  if (width < 1 || width > 4) throw Error("angle field: 1 to 4 columns");
+  if (held.size() != static_cast<std::size_t>(n) ||
+      values.size() != static_cast<std::size_t>(n) * width ||
+      jumps.size() != region.edges.size() * width) {
+    throw Error("angle field: held, values or jumps do not match the region");
+  }
+  JumpSolveResult result;
+  std::vector<int> freeLocal, freeMesh, row(n, -1);
+  for (int i = 0; i < n; ++i) {
+    if (held[i]) continue;
+    row[i] = static_cast<int>(freeLocal.size());
+    freeLocal.push_back(i);
+    freeMesh.push_back(region.vertices[i]);
+  }
+  result.freeVertices = static_cast<int>(freeLocal.size());
+  if (freeLocal.empty()) return result;
+  checkEveryFreePieceIsHeld(region, held);
+
+  const StiffnessRows k = assembleStiffnessRows(mesh, freeMesh);
+  const int m = static_cast<int>(freeLocal.size());
+  linalg::CsrMatrix<double> a;
+  a.rows = a.cols = m;
+  a.start.assign(m + 1, 0);
+  std::vector<double> rhs(static_cast<std::size_t>(m) * width, 0.0), x(rhs.size());
+  for (int r = 0; r < m; ++r) {
+    const int i = freeLocal[r];
+    for (int e = k.matrix.start[r]; e < k.matrix.start[r + 1]; ++e) {
+      const int j = region.localVertex(k.matrix.index[e]);
+      const int edge = j < 0 || j == i ? -1 : regionEdge(region, i, j);
+      if (j != i && edge < 0) {
+        throw Error("angle field: free vertex " + std::to_string(region.vertices[i]) +
+                    " has a tet outside the region");
+      }
+      const double kij = k.matrix.value[e];
+      if (j != i) {  // r_i = Σ_j K_ij g_ij (Eq. 6)
+        for (int c = 0; c < width; ++c)
+          rhs[r * width + c] += kij * orientedJump(jumps[edge * width + c], i, j);
+      }
+      if (row[j] >= 0) {
+        a.index.push_back(row[j]);
+        a.value.push_back(kij);
+      } else {  // − Σ_{j held} K_ij θ_j
+        for (int c = 0; c < width; ++c) rhs[r * width + c] -= kij * values[j * width + c];
+      }
+    }
+    a.start[r + 1] = static_cast<int>(a.index.size());
+    for (int c = 0; c < width; ++c) x[r * width + c] = values[i * width + c];
+  }
+  progress.throwIfCancelled();
+  const linalg::AmgPreconditioner amg(a);
+  const linalg::CgOptions cg{options.tolerance, options.maxIterations};
+  linalg::CgResult solved;
+  switch (width) {
+    case 1:
+      solved = runCg<1>(a, rhs, x, amg, cg, progress);
+      break;
+    case 2:
+      solved = runCg<2>(a, rhs, x, amg, cg, progress);
+      break;
+    case 3:
+      solved = runCg<3>(a, rhs, x, amg, cg, progress);
+      break;
+    default:
+      solved = runCg<4>(a, rhs, x, amg, cg, progress);
+      break;
+  }
+  for (int r = 0; r < m; ++r)
+    for (int c = 0; c < width; ++c) values[freeLocal[r] * width + c] = x[r * width + c];
+  result.iterations = solved.iterations;
+  result.relativeResidual = solved.relativeResidual;
+  return result;
+}
+
+}  // namespace tfd::core

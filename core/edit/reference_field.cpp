@@ -1,0 +1,225 @@
+#include "core/edit/reference_field.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <deque>
+#include <string>
+
+#include "core/design/parallel_transport.h"
+#include "core/error.h"
+
+namespace tfd::core {
+namespace {
+
+/// Position in TetMesh::tetEdges order (01, 02, 03, 12, 13, 23) of the edge joining local
+/// tet corners i and j.
+constexpr int kEdgeOf[4][4] = {{-1, 0, 1, 2}, {0, -1, 3, 4}, {1, 3, -1, 5}, {2, 4, 5, -1}};
+
+struct RegionTet {
+  std::array<int, 4> v;   ///< local vertices
+  std::array<int, 6> e;   ///< local edges, tetEdges order
+  std::array<int, 4> nb;  ///< local tet across the face opposite corner i, −1 outside
+};
+
+class Propagation {
+ public:
+  Propagation(const TetMesh& mesh, const RegionComplex& region, const std::vector<Vec3>& n)
+      : mesh_(mesh), region_(region), n_(n) {
+    const int tets = static_cast<int>(region.tets.size());
+    tets_.resize(tets);
+    for (int lt = 0; lt < tets; ++lt) {
+      const int t = region.tets[lt];
+      RegionTet& r = tets_[lt];
+      for (int i = 0; i < 4; ++i) {
+        r.v[i] = region.localVertex(mesh.tets()[t][i]);
+        const auto& ft = mesh.faceTets()[mesh.tetFaces()[t][i]];
+        const int other = ft[0] == t ? ft[1] : ft[0];
+        r.nb[i] = other < 0 ? -1 : region.localTet(other);
+      }
+      for (int k = 0; k < 6; ++k) r.e[k] = region.localEdge(mesh.tetEdges()[t][k]);
+    }
+    visited_.assign(tets, 0);
+    hasU_.assign(region.vertices.size(), 0);
+    known_.assign(region.edges.size(), 0);
+    out_.reference.assign(region.vertices.size(), Vec3::Zero());
+    out_.jumps.assign(region.edges.size(), 0.0);
+  }
+
+  ReferenceField run(int seed, const Vec3& seedReference) {
+    out_.seedVertex = region_.vertices[seed];
+    out_.reference[seed] = initialReference(n_[seed], seedReference);
+    hasU_[seed] = 1;
+    int seedTet = -1;
+    for (int t : mesh_.vertexTets(region_.vertices[seed])) {
+      if ((seedTet = region_.localTet(t)) >= 0) break;
+    }
+    add(seedTet);
+    std::size_t count = 1;
+    std::vector<int> deferred;
+    while (count < tets_.size()) {
+      while (!queue_.empty()) {
+        const int t = queue_.front();
+        queue_.pop_front();
+        if (visited_[t]) continue;
+        if (simple(t)) {
+          add(t);
+          ++count;
+        } else {
+          deferred.push_back(t);
+        }
+      }
+      if (count == tets_.size()) break;
+      // No tet keeps the set a ball: take the one sharing most faces (lowest index on ties).
+      int best = -1, bestShared = 0;
+      for (int t : deferred) {
+        const int s = visited_[t] ? 0 : shared(t);
+        if (s > bestShared || (s == bestShared && s > 0 && t < best)) best = t, bestShared = s;
+      }
+      if (best < 0) {
+        throw Error("reference field: the region is not connected through faces (" +
+                    std::to_string(tets_.size() - count) + " of " + std::to_string(tets_.size()) +
+                    " tets unreachable)");
+      }
+      ++out_.nonBallSteps;
+      add(best);
+      ++count;
+    }
+    return std::move(out_);
+  }
+
+ private:
+  static Vec3 initialReference(const Vec3& n, const Vec3& wanted) {
+    Vec3 u = wanted - wanted.dot(n) * n;
+    if (!(u.norm() > 1e-6 * std::max(1.0, wanted.norm()))) {
+      int axis = 0;
+      n.cwiseAbs().minCoeff(&axis);
+      const Vec3 e = Vec3::Unit(axis);
+      u = e - e.dot(n) * n;
+    }
+    return u.normalized();
+  }
+
+  int shared(int t) const {
+    int s = 0;
+    for (int nb : tets_[t].nb) s += nb >= 0 && visited_[nb];
+    return s;
+  }
+
+  /// Whether adding t keeps the visited set a ball: its contact with the set is a disk.
+  bool simple(int t) const {
+    const RegionTet& r = tets_[t];
+    int faces[4], s = 0;
+    for (int i = 0; i < 4; ++i)
+      if (r.nb[i] >= 0 && visited_[r.nb[i]]) faces[s++] = i;
+    if (s == 1) return !hasU_[r.v[faces[0]]];  // the opposite corner must be new
+    if (s == 2) return !known_[r.e[kEdgeOf[faces[0]][faces[1]]]];  // and the edge between them
+    return s == 3;
+  }
+
+  double jump(int e, int from, int to) const { return orientedJump(out_.jumps[e], from, to); }
+  void setJump(int e, int from, int to, double g) {
+    out_.jumps[e] = from < to ? g : -g;
+    known_[e] = 1;
+  }
+
+  Mat3 transport(int a, int b) const {
+    try {
+      return transportRotation(n_[a], n_[b]);
+    } catch (const Error&) {
+      throw Error("reference field: the directions at vertices " +
+                  std::to_string(region_.vertices[a]) + " and " +
+                  std::to_string(region_.vertices[b]) +
+                  " are opposite (the eigenvector is not vectorised)");
+    }
+  }
+
+  void add(int t) {
+    visited_[t] = 1;
+    RegionTet& r = tets_[t];
+    // A new corner takes U transported from the best-aligned corner that has one (jump 0).
+    for (int i = 0; i < 4; ++i) {
+      if (hasU_[r.v[i]]) continue;
+      int from = -1;
+      for (int j = 0; j < 4; ++j) {
+        if (j == i || !hasU_[r.v[j]]) continue;
+        if (from < 0 || n_[r.v[j]].dot(n_[r.v[i]]) > n_[r.v[from]].dot(n_[r.v[i]])) from = j;
+      }
+      const int a = r.v[from], b = r.v[i];
+      Vec3 u = transport(a, b) * out_.reference[a];
+      out_.reference[b] = (u - u.dot(n_[b]) * n_[b]).normalized();
+      hasU_[b] = 1;
+      setJump(r.e[kEdgeOf[from][i]], a, b, 0.0);
+    }
+    // Every other new edge from a triangle of t whose two other edges are known.
+    for (bool progress = true; progress;) {
+      progress = false;
+      int unknown = -1;
+      for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j) {
+          if (known_[r.e[kEdgeOf[i][j]]]) continue;
+          unknown = kEdgeOf[i][j];
+          for (int c = 0; c < 4 && !known_[r.e[kEdgeOf[i][j]]]; ++c) {
+            if (c == i || c == j || !known_[r.e[kEdgeOf[j][c]]] || !known_[r.e[kEdgeOf[c][i]]])
+              continue;
+            const int a = r.v[i], b = r.v[j], m = r.v[c];
+            const double g = sphericalTriangleArea(n_[a], n_[b], n_[m]) -
+                             jump(r.e[kEdgeOf[j][c]], b, m) - jump(r.e[kEdgeOf[c][i]], m, a);
+            setJump(r.e[kEdgeOf[i][j]], a, b, g);
+            progress = true;
+          }
+        }
+      if (!progress && unknown >= 0) {
+        // Only after a non-ball step: the wrapped angle of transport along the edge.
+        int i = 0, j = 1;
+        for (int p = 0; p < 4; ++p)
+          for (int q = p + 1; q < 4; ++q)
+            if (kEdgeOf[p][q] == unknown) i = p, j = q;
+        const int a = r.v[i], b = r.v[j];
+        const Vec3 moved = transport(a, b) * out_.reference[a];
+        setJump(r.e[unknown], a, b, signedAngle(out_.reference[b], moved, n_[b]));
+        progress = true;
+      }
+    }
+    for (int skip = 0; skip < 4; ++skip) {  // the four triangles
+      int c[3], k = 0;
+      for (int i = 0; i < 4; ++i)
+        if (i != skip) c[k++] = i;
+      const int a = r.v[c[0]], b = r.v[c[1]], m = r.v[c[2]];
+      const double defect =
+          jump(r.e[kEdgeOf[c[0]][c[1]]], a, b) + jump(r.e[kEdgeOf[c[1]][c[2]]], b, m) +
+          jump(r.e[kEdgeOf[c[2]][c[0]]], m, a) - sphericalTriangleArea(n_[a], n_[b], n_[m]);
+      out_.maxHolonomyDefect = std::max(out_.maxHolonomyDefect, std::abs(defect));
+    }
+    for (int nb : r.nb)
+      if (nb >= 0 && !visited_[nb]) queue_.push_back(nb);
+  }
+
+  const TetMesh& mesh_;
+  const RegionComplex& region_;
+  const std::vector<Vec3>& n_;
+  std::vector<RegionTet> tets_;
+  std::vector<char> visited_, hasU_, known_;
+  std::deque<int> queue_;
+  ReferenceField out_;
+};
+
+}  // namespace
+
+double sphericalTriangleArea(const Vec3& a, const Vec3& b, const Vec3& c) {
+  return 2 * std::atan2(a.dot(b.cross(c)), 1 + a.dot(b) + b.dot(c) + c.dot(a));
+}
+
+ReferenceField referenceField(const TetMesh& mesh, const RegionComplex& region,
+                              const std::vector<Vec3>& directions, int seed,
+                              const Vec3& seedReference) {
+  if (directions.size() != region.vertices.size()) {
+    throw Error("reference field: one direction per region vertex expected");
+  }
+  if (seed < 0 || seed >= static_cast<int>(region.vertices.size())) {
+    throw Error("reference field: the seed is not a region vertex");
+  }
+  return Propagation(mesh, region, directions).run(seed, seedReference);
+}
+
+}  // namespace tfd::core

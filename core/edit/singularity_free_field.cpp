@@ -1,0 +1,186 @@
+#include "core/edit/singularity_free_field.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <sstream>
+
+#include "core/design/parallel_transport.h"
+#include "core/edit/angle_field.h"
+#include "core/edit/reference_field.h"
+#include "core/edit/region_complex.h"
+#include "core/edit/vectorise_eigenvector.h"
+#include "core/error.h"
+
+namespace tfd::core {
+namespace {
+
+template <class F>
+void forEach(int n, F&& f) {
+  tbb::parallel_for(tbb::blocked_range<int>(0, n, 256), [&](const tbb::blocked_range<int>& r) {
+    for (int i = r.begin(); i != r.end(); ++i) f(i);
+  });
+}
+
+/// Held per local vertex: asked for, or touching a tet outside the region.
+std::vector<char> heldVertices(const TetMesh& mesh, const RegionComplex& region,
+                               const std::vector<char>& held) {
+  std::vector<char> out(region.vertices.size(), 0);
+  forEach(static_cast<int>(region.vertices.size()), [&](int i) {
+    const int v = region.vertices[i];
+    bool h = held[v] != 0;
+    for (int t : mesh.vertexTets(v)) h = h || region.localTet(t) < 0;
+    out[i] = h;
+  });
+  return out;
+}
+
+/// The local vertex nearest the mean of the region's vertices (lowest index on ties).
+int centralVertex(const TetMesh& mesh, const RegionComplex& region) {
+  Vec3 mean = Vec3::Zero();
+  for (int v : region.vertices) mean += mesh.positions()[v];
+  mean /= static_cast<double>(region.vertices.size());
+  int best = 0;
+  for (int i = 1; i < static_cast<int>(region.vertices.size()); ++i) {
+    if ((mesh.positions()[region.vertices[i]] - mean).squaredNorm() <
+        (mesh.positions()[region.vertices[best]] - mean).squaredNorm())
+      best = i;
+  }
+  return best;
+}
+
+void gaps(const Vec3& l, double& g12, double& g23) {
+  g12 = std::min(g12, l[0] - l[1]);
+  g23 = std::min(g23, l[1] - l[2]);
+}
+
+}  // namespace
+
+std::string SingularityFreeReport::summary() const {
+  std::ostringstream s;
+  s << "singularity-free field on " << regionTets << " tets: " << freeVertices << " of "
+    << regionVertices << " vertices solved (" << heldVertices << " held) in " << iterations
+    << " iterations; smallest eigenvalue gaps " << freeMinGap12 << ", " << freeMinGap23
+    << " inside (" << heldMinGap12 << ", " << heldMinGap23 << " held)";
+  if (nonBallSteps > 0) s << "; " << nonBallSteps << " tets not in a ball order";
+  return s.str();
+}
+
+TensorField singularityFreeField(const TensorField& field, const std::vector<int>& regionTets,
+                                 const std::vector<char>& held, DegenerateType type,
+                                 const Progress& progress) {
+  return singularityFreeField(field, regionTets, held, type, progress, nullptr);
+}
+
+TensorField singularityFreeField(const TensorField& field, const std::vector<int>& regionTets,
+                                 const std::vector<char>& held, DegenerateType type,
+                                 const Progress& progress, SingularityFreeReport* report) {
+  const TetMesh& mesh = field.mesh();
+  if (held.size() != mesh.vertexCount()) {
+    throw Error("singularity-free field: `held` has " + std::to_string(held.size()) +
+                " entries for " + std::to_string(mesh.vertexCount()) + " mesh vertices");
+  }
+  progress.report(0, "orienting the non-repeating eigenvector");
+  const RegionComplex region = regionComplex(mesh, regionTets);
+  const VectorisedEigenvector n = vectoriseEigenvector(field, region.tets, type);
+  const char* which = type == DegenerateType::Linear ? "major" : "minor";
+  if (n.signConflicts > 0) {
+    throw Error(std::string("singularity-free field: the ") + which +
+                " eigenvector cannot be oriented in the region (" +
+                std::to_string(n.signConflicts) +
+                " edges disagree): the region holds a degenerate point where it repeats");
+  }
+  const int count = static_cast<int>(region.vertices.size());
+  const std::vector<char> fixed = heldVertices(mesh, region, held);
+  SingularityFreeReport r;
+  r.regionTets = region.tets.size();
+  r.regionVertices = region.vertices.size();
+  r.heldVertices = static_cast<std::size_t>(std::count(fixed.begin(), fixed.end(), 1));
+  r.freeVertices = r.regionVertices - r.heldVertices;
+  if (r.heldVertices == 0) throw Error("singularity-free field: the region has no held vertex");
+
+  // Eigen-decomposition of the deviator at every region vertex (medium eigenvector, values).
+  std::vector<EigenDecomposition> eig(count);
+  std::vector<double> trace(count);
+  forEach(count, [&](int i) {
+    const Tensor& t = field.at(region.vertices[i]);
+    eig[i] = eigenDecompose(t.deviator());
+    trace[i] = t.trace();
+  });
+  bool hasTrace = false;
+  for (int i = 0; i < count; ++i) hasTrace = hasTrace || (fixed[i] && trace[i] != 0);
+  progress.throwIfCancelled();
+
+  progress.report(0.2, "reference field and jumps");
+  const int seed = centralVertex(mesh, region);
+  const ReferenceField ref =
+      referenceField(mesh, region, n.directions, seed, eig[seed].vectors.col(1));
+  r.nonBallSteps = ref.nonBallSteps;
+  r.maxHolonomyDefect = ref.maxHolonomyDefect;
+  progress.throwIfCancelled();
+
+  // Columns θ, λ1, λ3 (and the trace): θ with the jumps, the others harmonic.
+  progress.report(0.4, "solving the angle field and the eigenvalues");
+  const int width = hasTrace ? 4 : 3;
+  std::vector<double> raw(count, 0.0);
+  forEach(count, [&](int i) {
+    if (fixed[i]) {
+      raw[i] = signedAngle(ref.reference[i], eig[i].vectors.col(1), n.directions[i]);
+    }
+  });
+  const std::vector<double> theta =
+      liftAngles(region, fixed, raw, ref.jumps, std::numbers::pi);  // the medium one is a line
+  std::vector<double> values(static_cast<std::size_t>(count) * width);
+  std::vector<double> jumps(region.edges.size() * width, 0.0);
+  for (int i = 0; i < count; ++i) {
+    values[i * width] = theta[i];
+    values[i * width + 1] = eig[i].values[0];
+    values[i * width + 2] = eig[i].values[2];
+    if (hasTrace) values[i * width + 3] = trace[i];
+  }
+  for (std::size_t e = 0; e < region.edges.size(); ++e) jumps[e * width] = ref.jumps[e];
+  const JumpSolveResult solved =
+      solveJumpLaplacian(mesh, region, fixed, jumps, values, width, {}, progress);
+  r.iterations = solved.iterations;
+  r.relativeResidual = solved.relativeResidual;
+
+  // Recombine at the solved vertices: frame (N, medium, N × medium) and λ1, −λ1 − λ3, λ3.
+  progress.report(0.9, "recombining tensors");
+  std::vector<Tensor> out = field.values();
+  forEach(count, [&](int i) {
+    if (fixed[i]) return;
+    const Vec3& nd = n.directions[i];
+    const Vec3& u = ref.reference[i];
+    const double th = values[i * width];
+    const Vec3 medium = std::cos(th) * u + std::sin(th) * nd.cross(u);
+    const Vec3 other = nd.cross(medium);
+    const double l1 = values[i * width + 1], l3 = values[i * width + 2], l2 = -l1 - l3;
+    const Vec3 major = type == DegenerateType::Linear ? nd : other;
+    const Vec3 minor = type == DegenerateType::Linear ? other : nd;
+    Mat3 m = l1 * major * major.transpose() + l2 * medium * medium.transpose() +
+             l3 * minor * minor.transpose();
+    if (hasTrace) m += values[i * width + 3] / 3 * Mat3::Identity();
+    out[region.vertices[i]] = Tensor::fromMatrix(m);
+  });
+
+  const double inf = std::numeric_limits<double>::infinity();
+  r.heldMinGap12 = r.heldMinGap23 = r.freeMinGap12 = r.freeMinGap23 = inf;
+  for (int i = 0; i < count; ++i) {
+    if (fixed[i]) {
+      gaps(eig[i].values, r.heldMinGap12, r.heldMinGap23);
+    } else {
+      const double l1 = values[i * width + 1], l3 = values[i * width + 2];
+      gaps(Vec3(l1, -l1 - l3, l3), r.freeMinGap12, r.freeMinGap23);
+    }
+  }
+  if (r.freeVertices == 0) r.freeMinGap12 = r.freeMinGap23 = 0;
+  if (report) *report = r;
+  progress.report(1, "");
+  return TensorField(field.meshPtr(), std::move(out));
+}
+
+}  // namespace tfd::core
