@@ -1,0 +1,235 @@
+#include "core/edit/remove_curves.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <optional>
+
+#include "core/edit/edit_verification.h"
+#include "core/edit/singularity_free_field.h"
+#include "core/edit/vectorise_eigenvector.h"
+#include "core/region/ball_check.h"
+#include "core/region/ball_region.h"
+#include "core/region/curve_tube.h"
+#include "core/region/region_vertices.h"
+#include "core/topology/curve_tets.h"
+
+namespace tfd::core {
+namespace {
+
+std::string number(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", x);
+  return buf;
+}
+
+/// Shortest distance between the points of `a` and the polyline of `b`.
+double curveDistance(const DegenerateCurve& a, const DegenerateCurve& b) {
+  double best = std::numeric_limits<double>::infinity();
+  const std::size_t n = b.points.size();
+  for (const Vec3& p : a.points) {
+    if (n == 1) best = std::min(best, (p - b.points[0]).norm());
+    for (std::size_t i = 0; i < b.segmentCount(); ++i) {
+      const Vec3 &u = b.points[i], &v = b.points[(i + 1) % n];
+      const double t = closestSegmentParameter(p, u, v);
+      best = std::min(best, (p - ((1 - t) * u + t * v)).norm());
+    }
+  }
+  return best;
+}
+
+struct Targets {
+  std::vector<int> ids;
+  std::vector<const DegenerateCurve*> curves;
+  std::vector<double> pickDistances;
+};
+
+Targets resolveTargets(const TetMesh& mesh, const DegenerateCurves& all,
+                       const RemoveCurvesOptions& o) {
+  if (o.picks.empty() || o.picks.size() > 2)
+    throw Error("picks: give one or two points (got " + std::to_string(o.picks.size()) + ")");
+  if (all.empty()) throw Error("the field has no degenerate curves to remove");
+  const DegenerateCurves& pickFrom = o.curves ? *o.curves : all;
+  const double tolerance = 1e-9 * (mesh.boundsMax() - mesh.boundsMin()).norm();
+  Targets t;
+  for (const Vec3& p : o.picks) {
+    if (!p.allFinite()) throw Error("picks: a pick is not a finite point");
+    const std::optional<CurvePick> seen = pickFrom.pick(p);
+    if (!seen) throw Error("curves: the given curves are empty");
+    int id = seen->curveId;
+    if (o.curves) {
+      const CurvePick mapped = *all.pick(seen->position);
+      if (mapped.distance > tolerance)
+        throw Error("curves: the given curves do not belong to the field (the picked curve is " +
+                    number(mapped.distance) + " from every curve of the field)");
+      id = mapped.curveId;
+    }
+    if (std::find(t.ids.begin(), t.ids.end(), id) != t.ids.end()) continue;
+    t.ids.push_back(id);
+    t.curves.push_back(&all.curve(id));
+    t.pickDistances.push_back(seen->distance);
+  }
+  return t;
+}
+
+std::vector<int> sourceTets(const TetMesh& mesh, const DegenerateCurve& c) {
+  std::vector<int> tets;
+  for (const PointSource& s : c.sources)
+    for (int t : tetsOfSource(mesh, s)) tets.push_back(t);
+  return tets;
+}
+
+/// Seeds: the tets holding the targets and every tet around their vertices.
+std::vector<int> seedTets(const TetMesh& mesh, const Targets& targets) {
+  std::vector<int> seeds;
+  for (const DegenerateCurve* c : targets.curves)
+    for (int t : sourceTets(mesh, *c))
+      for (int v : mesh.tets()[t])
+        for (int n : mesh.vertexTets(v)) seeds.push_back(n);
+  std::sort(seeds.begin(), seeds.end());
+  seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
+  return seeds;
+}
+
+[[noreturn]] void refuseCut(const DegenerateCurves& all, const Targets& targets, int owner) {
+  const DegenerateCurve& other = all.curve(owner);
+  double d = std::numeric_limits<double>::infinity();
+  std::string names;
+  for (const DegenerateCurve* c : targets.curves) {
+    d = std::min(d, curveDistance(*c, other));
+    names += (names.empty() ? "" : " and ") + describeCurve(*c);
+  }
+  throw RemovalRefused("no ball region around " + names + " avoids " + describeCurve(other) + ", " +
+                       number(d) + " away: the region would have to cut it");
+}
+
+}  // namespace
+
+std::vector<std::string> RemoveCurvesReport::lines() const {
+  std::vector<std::string> out;
+  std::string head = std::string(toString(scenario)) + " removal of ";
+  for (std::size_t i = 0; i < targets.size(); ++i)
+    head += (i ? " and " : "") + targets[i] + " (picked " + number(pickDistances[i]) + " away)";
+  out.push_back(head);
+  out.push_back("region: " + std::to_string(regionTets) + " tets, " +
+                std::to_string(regionVertices) + " vertices (" + std::to_string(freeVertices) +
+                " free, " + std::to_string(heldVertices) + " held; " +
+                std::to_string(freeOnSurface) + " free on the domain surface, " +
+                std::to_string(surfaceFaces) + " boundary faces on it)");
+  out.push_back("region growth: " + growStop + "; shrink: " + shrinkStop +
+                "; grow out: " + growOutStop);
+  out.push_back(flow.summary() + "; " + std::to_string(signConflicts) + " sign conflicts");
+  std::string t = "tries: " + std::to_string(tries.size());
+  for (std::size_t i = 0; i < tries.size(); ++i) {
+    t +=
+        "; #" + std::to_string(i + 1) + " distance " + number(tries[i].distance) + ", " +
+        std::to_string(tries[i].regionTets) + " tets: " +
+        (tries[i].failedCheck.empty() ? "verified"
+                                      : tries[i].failedCheck + " failed (" + tries[i].detail + ")");
+  }
+  out.push_back(t);
+  out.push_back("time " + number(seconds) + " s");
+  out.push_back(std::to_string(curvesBefore) + " curves -> " + std::to_string(curvesAfter));
+  return out;
+}
+
+RemoveCurvesResult removeCurves(const TensorField& field, const RemoveCurvesOptions& o,
+                                const Progress& progress) {
+  const auto start = std::chrono::steady_clock::now();
+  const TetMesh& mesh = field.mesh();
+  if (!(o.retries >= 0) || !(o.growFactor > 1) || !std::isfinite(o.regionDistance))
+    throw Error("retries must be ≥ 0, the grow factor > 1 and region_distance finite");
+  progress.report(0, "extracting curves");
+  const DegenerateCurves all = extractDegenerateCurves(field, o.extract, progress);
+  const Targets targets = resolveTargets(mesh, all, o);
+  RemoveCurvesReport report;
+  report.scenario = removalScenario(targets.curves);
+  for (const DegenerateCurve* c : targets.curves) report.targets.push_back(describeCurve(*c));
+  report.pickDistances = targets.pickDistances;
+  report.curvesBefore = all.size();
+  const DegenerateType type = targets.curves[0]->type;
+
+  std::vector<unsigned char> forbidden(mesh.tetCount(), 0);
+  std::vector<int> owner(mesh.tetCount(), -1);
+  for (const DegenerateCurve& c : all.curves()) {
+    if (std::find(targets.ids.begin(), targets.ids.end(), c.id) != targets.ids.end()) continue;
+    for (int t : sourceTets(mesh, c))
+      if (!forbidden[t]) forbidden[t] = 1, owner[t] = c.id;
+  }
+  const std::vector<int> seeds = seedTets(mesh, targets);
+  for (int s : seeds)
+    if (forbidden[s]) refuseCut(all, targets, owner[s]);
+
+  const double radius = 0.5 * (mesh.boundsMax() - mesh.boundsMin()).norm();
+  const double distance0 = o.regionDistance < 0 ? 0.3 * radius : o.regionDistance;
+  for (int k = 0; k <= o.retries; ++k) {
+    RemovalTry attempt;
+    attempt.distance = distance0 * std::pow(o.growFactor, k);
+    progress.report(0.1 + 0.8 * k / (o.retries + 1), "growing the region");
+    const BallRegion region = growBallRegion(mesh, seeds, forbidden, {attempt.distance}, progress);
+    if (!region.complete) {
+      if (region.blockingTet >= 0) refuseCut(all, targets, owner[region.blockingTet]);
+      throw RemovalRefused("no ball region around the targets: " + region.growStop);
+    }
+    attempt.regionTets = region.tets.size();
+    const BallCheck ball = checkTopologicalBall(mesh, region.tets);
+    const RegionVertices rv = regionVertices(mesh, region.tets);
+    TensorField edited = field;
+    if (!ball.ball) {
+      attempt.failedCheck = "region is a ball", attempt.detail = ball.problem;
+    } else if (rv.free.size() == rv.vertices.size()) {
+      attempt.failedCheck = "region leaves a held boundary";
+      attempt.detail = "the region grew to the whole mesh: nothing outside it holds the field";
+    } else {
+      const VectorisedEigenvector vec = vectoriseEigenvector(field, region.tets, type);
+      report.flow = boundaryFlow(mesh, region.tets, vec);
+      report.signConflicts = vec.signConflicts;
+      Progress inner = progress;
+      try {
+        edited = singularityFreeField(field, region.tets, rv.held, type, inner);
+      } catch (const Cancelled&) {
+        throw;
+      } catch (const Error& e) {
+        attempt.failedCheck = "singularity-free field", attempt.detail = e.what();
+      }
+    }
+    if (attempt.failedCheck.empty()) {
+      DegenerateCurves after = extractDegenerateCurves(edited, o.extract, progress);
+      const EditVerification v =
+          verifyEdit(field, edited, rv.free, region.tets, all, after, targets.ids);
+      attempt.failedCheck = v.failedCheck, attempt.detail = v.detail;
+      if (v.passed) {
+        report.tries.push_back(attempt);
+        report.regionTets = region.tets.size();
+        report.regionVertices = rv.vertices.size();
+        report.freeVertices = rv.free.size();
+        report.heldVertices = rv.vertices.size() - rv.free.size();
+        report.freeOnSurface = rv.freeOnSurface;
+        report.surfaceFaces = rv.surfaceFaces;
+        report.growStop = region.growStop, report.shrinkStop = region.shrinkStop;
+        report.growOutStop = region.growOutStop;
+        report.curvesAfter = after.size();
+        report.seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        progress.report(1, "verified");
+        return {std::move(edited), std::move(after), region.tets, std::move(report)};
+      }
+    }
+    report.tries.push_back(attempt);
+    if (k > 0 && report.tries[k - 1].regionTets == attempt.regionTets) break;  // cannot grow
+  }
+  const RemovalTry& last = report.tries.back();
+  std::string earlier;
+  for (std::size_t i = 0; i + 1 < report.tries.size(); ++i)
+    earlier += "; try " + std::to_string(i + 1) + " (" +
+               std::to_string(report.tries[i].regionTets) +
+               " tets): " + report.tries[i].failedCheck + " (" + report.tries[i].detail + ")";
+  throw RemovalFailed("verification failed after " + std::to_string(report.tries.size()) +
+                      " tries: check '" + last.failedCheck + "' failed (" + last.detail +
+                      "); last region " + std::to_string(last.regionTets) + " tets (distance " +
+                      number(last.distance) + ")" + earlier);
+}
+
+}  // namespace tfd::core

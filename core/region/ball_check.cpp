@@ -1,0 +1,126 @@
+#include "core/region/ball_check.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <numeric>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+namespace tfd::core {
+namespace {
+
+struct UnionFind {
+  std::vector<int> parent;
+  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+  int find(int a) {
+    while (parent[a] != a) a = parent[a] = parent[parent[a]];
+    return a;
+  }
+  void join(int a, int b) { parent[find(a)] = find(b); }
+  int roots() {
+    int n = 0;
+    for (std::size_t i = 0; i < parent.size(); ++i) n += find(int(i)) == int(i);
+    return n;
+  }
+};
+
+std::uint64_t edgeKey(int a, int b) {
+  if (a > b) std::swap(a, b);
+  return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b);
+}
+
+int tetComponents(const TetMesh& mesh, const std::vector<int>& tets,
+                  const std::unordered_map<int, int>& index) {
+  UnionFind uf(tets.size());
+  for (std::size_t i = 0; i < tets.size(); ++i) {
+    for (int f : mesh.tetFaces()[tets[i]]) {
+      for (int other : mesh.faceTets()[f]) {
+        const auto it = other >= 0 ? index.find(other) : index.end();
+        if (it != index.end()) uf.join(int(i), it->second);
+      }
+    }
+  }
+  return uf.roots();
+}
+
+}  // namespace
+
+BallCheck checkTopologicalBall(const TetMesh& mesh, std::span<const int> tetSpan) {
+  BallCheck r;
+  std::vector<int> tets(tetSpan.begin(), tetSpan.end());
+  std::sort(tets.begin(), tets.end());
+  if (tets.empty()) {
+    r.problem = "the region is empty";
+    return r;
+  }
+  std::unordered_map<int, int> index;
+  index.reserve(tets.size() * 2);
+  for (std::size_t i = 0; i < tets.size(); ++i) index.emplace(tets[i], int(i));
+  r.components = tetComponents(mesh, tets, index);
+
+  // Boundary faces (oriented or not does not matter for the counts).
+  std::vector<int> faces;
+  for (int t : tets) {
+    for (int f : mesh.tetFaces()[t]) {
+      const auto& ft = mesh.faceTets()[f];
+      const int other = ft[0] == t ? ft[1] : ft[0];
+      if (other >= 0 && index.count(other)) continue;
+      faces.push_back(f);
+      r.surfaceFaces += other < 0;
+    }
+  }
+  r.boundaryFaces = int(faces.size());
+  std::unordered_map<std::uint64_t, std::vector<int>> edgeFaces;  // edge -> boundary faces
+  std::unordered_map<int, std::vector<int>> vertexFaces;          // vertex -> boundary faces
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    const auto& f = mesh.faces()[faces[i]];
+    for (int k = 0; k < 3; ++k) {
+      edgeFaces[edgeKey(f[k], f[(k + 1) % 3])].push_back(int(i));
+      vertexFaces[f[k]].push_back(int(i));
+    }
+  }
+  int badEdges = 0;
+  UnionFind surface(faces.size());
+  for (const auto& [key, list] : edgeFaces) {
+    if (list.size() != 2) ++badEdges;
+    for (std::size_t k = 1; k < list.size(); ++k) surface.join(list[0], list[k]);
+  }
+  r.boundaryComponents = faces.empty() ? 0 : surface.roots();
+  r.eulerCharacteristic = int(vertexFaces.size()) - int(edgeFaces.size()) + int(faces.size());
+
+  // Pinched vertices: the faces around a vertex must form one fan (connected through edges
+  // at that vertex).
+  int pinched = 0;
+  for (const auto& [v, list] : vertexFaces) {
+    UnionFind fan(list.size());
+    std::unordered_map<int, int> firstAt;  // other vertex of an edge at v -> fan index
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      for (int w : mesh.faces()[faces[list[i]]]) {
+        if (w == v) continue;
+        const auto [it, fresh] = firstAt.emplace(w, int(i));
+        if (!fresh) fan.join(int(i), it->second);
+      }
+    }
+    pinched += fan.roots() != 1;
+  }
+
+  if (r.components != 1) {
+    r.problem = "the tets form " + std::to_string(r.components) + " separate pieces";
+  } else if (badEdges > 0) {
+    r.problem = std::to_string(badEdges) + " boundary edges are not on exactly two boundary faces";
+  } else if (pinched > 0) {
+    r.problem = std::to_string(pinched) + " boundary vertices are pinched";
+  } else if (r.boundaryComponents != 1) {
+    r.problem =
+        "the boundary has " + std::to_string(r.boundaryComponents) + " components (a cavity)";
+  } else if (r.eulerCharacteristic != 2) {
+    r.problem = "the boundary has Euler characteristic " + std::to_string(r.eulerCharacteristic) +
+                " (a sphere has 2: the region has a handle or tunnel)";
+  } else {
+    r.ball = true;
+  }
+  return r;
+}
+
+}  // namespace tfd::core

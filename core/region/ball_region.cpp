@@ -1,0 +1,257 @@
+#include "core/region/ball_region.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <queue>
+
+#include "core/error.h"
+#include "core/region/tet_set.h"
+
+namespace tfd::core {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+Vec3 centroid(const TetMesh& mesh, int t) {
+  const auto& v = mesh.tets()[t];
+  const auto& p = mesh.positions();
+  return 0.25 * (p[v[0]] + p[v[1]] + p[v[2]] + p[v[3]]);
+}
+
+using Entry = std::pair<double, int>;
+using MinHeap = std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>>;
+
+/// Adds tets nearest first while they keep the set a ball: candidates are the face neighbours
+/// of the set; a candidate that fails the simple-tet test waits ("deferred") until a tet next
+/// to it joins. `key` gives a candidate's distance (infinite: never a candidate).
+class Grower {
+ public:
+  enum State : unsigned char { None, Queued, Deferred };
+  Grower(TetSet& set, const std::vector<unsigned char>& forbidden, std::function<double(int)> key,
+         std::function<void(int)> onAdd = {})
+      : set_(set),
+        mesh_(set.mesh()),
+        forbidden_(forbidden),
+        key_(std::move(key)),
+        onAdd_(std::move(onAdd)),
+        state_(mesh_.tetCount(), None) {}
+
+  void add(int t) {
+    set_.add(t);
+    if (onAdd_) onAdd_(t);
+    for (int f : mesh_.tetFaces()[t]) {
+      for (int n : mesh_.faceTets()[f]) {
+        if (n < 0 || set_.contains(n) || state_[n] != None) continue;
+        queue(n);
+      }
+    }
+    for (int v : mesh_.tets()[t])
+      for (int n : mesh_.vertexTets(v))
+        if (state_[n] == Deferred && !set_.contains(n)) queue(n);
+  }
+  void queueNeighboursOfSet(const std::vector<int>& members) {
+    for (int t : members)
+      for (int f : mesh_.tetFaces()[t])
+        for (int n : mesh_.faceTets()[f])
+          if (n >= 0 && !set_.contains(n) && state_[n] == None) queue(n);
+  }
+  /// Runs until `done()` or no candidate is left; returns whether done() held.
+  bool run(const std::function<bool()>& done, const Progress& progress) {
+    std::size_t steps = 0;
+    while (!done()) {
+      if (heap_.empty()) return false;
+      if (++steps % 4096 == 0) progress.throwIfCancelled();
+      const auto [d, t] = heap_.top();
+      heap_.pop();
+      if (state_[t] != Queued || set_.contains(t)) continue;
+      if (forbidden_[t]) {
+        state_[t] = Deferred;  // never re-queued: only non-forbidden tets are re-checked
+        ++forbiddenMet_;
+        if (blockingTet_ < 0) blockingTet_ = t, blockingDistance_ = d;
+        continue;
+      }
+      if (set_.canAdd(t)) {
+        state_[t] = None;
+        add(t);
+        ++added_;
+      } else {
+        state_[t] = Deferred;
+      }
+    }
+    return true;
+  }
+  std::size_t added() const { return added_; }
+  std::size_t forbiddenMet() const { return forbiddenMet_; }
+  int blockingTet() const { return blockingTet_; }
+  double blockingDistance() const { return blockingDistance_; }
+  std::size_t deferred() const {
+    std::size_t n = 0;
+    for (std::size_t t = 0; t < state_.size(); ++t)
+      n += state_[t] == Deferred && !forbidden_[t] && !set_.contains(int(t));
+    return n;
+  }
+
+ private:
+  void queue(int n) {
+    const double k = key_(n);
+    if (!(k < kInf)) return;
+    state_[n] = Queued;
+    heap_.emplace(k, n);
+  }
+
+  TetSet& set_;
+  const TetMesh& mesh_;
+  const std::vector<unsigned char>& forbidden_;
+  std::function<double(int)> key_;
+  std::function<void(int)> onAdd_;
+  std::vector<unsigned char> state_;
+  MinHeap heap_;
+  std::size_t added_ = 0, forbiddenMet_ = 0;
+  int blockingTet_ = -1;
+  double blockingDistance_ = 0;
+};
+
+std::string lengthText(double d) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", d);
+  return buf;
+}
+
+/// Step 2: removes non-seed tets, farthest first, while the set stays a ball.
+std::string shrink(TetSet& set, const std::vector<unsigned char>& isSeed,
+                   const std::vector<double>& key, const Progress& progress) {
+  std::vector<int> order;
+  for (int t : set.tets())
+    if (!isSeed[t]) order.push_back(t);
+  std::sort(order.begin(), order.end(),
+            [&](int a, int b) { return key[a] != key[b] ? key[a] > key[b] : a < b; });
+  std::size_t removed = 0;
+  for (int sweep = 0; sweep < 64; ++sweep) {
+    std::size_t now = 0;
+    for (int t : order) {
+      if (set.contains(t) && set.canRemove(t)) set.remove(t), ++now;
+    }
+    progress.throwIfCancelled();
+    removed += now;
+    if (now == 0)
+      return "removed " + std::to_string(removed) +
+             " tets; every other non-target tet is needed to keep a ball";
+  }
+  return "removed " + std::to_string(removed) + " tets (stopped after 64 sweeps)";
+}
+
+}  // namespace
+
+std::vector<double> tetDistances(const TetMesh& mesh, std::span<const int> sources, double bound,
+                                 const Progress& progress) {
+  std::vector<double> d(mesh.tetCount(), kInf);
+  std::vector<int> source(mesh.tetCount(), -1);
+  MinHeap heap;
+  for (int s : sources) {
+    if (d[s] == 0) continue;
+    d[s] = 0, source[s] = s;
+    heap.emplace(0.0, s);
+  }
+  std::size_t steps = 0;
+  while (!heap.empty()) {
+    const auto [dt, t] = heap.top();
+    heap.pop();
+    if (dt > d[t]) continue;
+    if (++steps % 8192 == 0) progress.throwIfCancelled();
+    const Vec3 origin = centroid(mesh, source[t]);
+    for (int f : mesh.tetFaces()[t]) {
+      for (int n : mesh.faceTets()[f]) {
+        if (n < 0 || n == t) continue;
+        const double dn = (centroid(mesh, n) - origin).norm();
+        if (dn <= bound && dn < d[n]) {
+          d[n] = dn, source[n] = source[t];
+          heap.emplace(dn, n);
+        }
+      }
+    }
+  }
+  return d;
+}
+
+BallRegion growBallRegion(const TetMesh& mesh, std::span<const int> seedSpan,
+                          const std::vector<unsigned char>& forbidden,
+                          const BallRegionOptions& options, const Progress& progress) {
+  std::vector<int> seeds(seedSpan.begin(), seedSpan.end());
+  std::sort(seeds.begin(), seeds.end());
+  seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
+  if (seeds.empty()) throw Error("region growing: no seed tets");
+  if (seeds.front() < 0 || seeds.back() >= int(mesh.tetCount()))
+    throw Error("region growing: seed tet id out of range");
+  if (forbidden.size() != mesh.tetCount())
+    throw Error("region growing: forbidden flags do not match the mesh");
+  BallRegion r;
+  std::vector<unsigned char> isSeed(mesh.tetCount(), 0);
+  for (int s : seeds) isSeed[s] = 1;
+
+  // Step 1: distances to the seeds within a generous bound; beyond it the key continues with
+  // the distance to the seeds' centre, so growth can always go on.
+  const double bound1 = std::max(options.distance, 8 * mesh.meanEdgeLength());
+  const std::vector<double> d1 = tetDistances(mesh, seeds, bound1, progress);
+  Vec3 centre = Vec3::Zero();
+  for (int s : seeds) centre += centroid(mesh, s);
+  centre /= double(seeds.size());
+  auto key1 = [&](int t) {
+    return d1[t] < kInf ? d1[t] : bound1 + (centroid(mesh, t) - centre).norm();
+  };
+  TetSet set(mesh);
+  std::size_t seedsIn = 0;
+  {
+    Grower grower(set, forbidden, key1, [&](int t) { seedsIn += isSeed[t]; });
+    if (!forbidden[seeds.front()]) grower.add(seeds.front());
+    auto allSeedsIn = [&] { return seedsIn == seeds.size(); };
+    r.complete = seedsIn > 0 && grower.run(allSeedsIn, progress);
+    r.blockingTet = grower.blockingTet();
+    r.blockingDistance = grower.blockingDistance();
+    r.grownTets = set.size();
+    if (r.complete) {
+      r.growStop = "all " + std::to_string(seeds.size()) + " target tets inside a ball of " +
+                   std::to_string(set.size()) + " tets";
+    } else {
+      for (int s : seeds)
+        if (!set.contains(s)) r.missingSeeds.push_back(s);
+      r.growStop =
+          std::to_string(r.missingSeeds.size()) + " of " + std::to_string(seeds.size()) +
+          " target tets cannot join a ball: " +
+          (grower.forbiddenMet() > 0
+               ? std::to_string(grower.forbiddenMet()) + " tets on the way hold another curve"
+               : std::string("no tet left that keeps the region a ball"));
+      r.tets = set.tets();
+      return r;
+    }
+  }
+
+  // Step 2.
+  std::vector<double> key1All(mesh.tetCount(), 0);
+  for (int t : set.tets()) key1All[t] = key1(t);
+  r.shrinkStop = shrink(set, isSeed, key1All, progress);
+  r.shrunkTets = set.size();
+
+  // Step 3.
+  if (options.distance > 0) {
+    const std::vector<int> core = set.tets();
+    const std::vector<double> d3 = tetDistances(mesh, core, options.distance, progress);
+    Grower grower(set, forbidden, [&](int t) { return d3[t]; });
+    grower.queueNeighboursOfSet(core);
+    grower.run([] { return false; }, progress);
+    r.growOutStop = "added " + std::to_string(grower.added()) + " tets out to distance " +
+                    lengthText(options.distance);
+    if (grower.forbiddenMet() > 0)
+      r.growOutStop += "; " + std::to_string(grower.forbiddenMet()) +
+                       " tets left out because they hold another curve";
+    if (const std::size_t waiting = grower.deferred(); waiting > 0)
+      r.growOutStop += "; " + std::to_string(waiting) + " left out to keep a ball";
+  } else {
+    r.growOutStop = "no growing out (distance 0)";
+  }
+  r.tets = set.tets();
+  return r;
+}
+
+}  // namespace tfd::core
