@@ -74,6 +74,37 @@ class SeekableVdbArchive : public openvdb::io::Archive {
 /// Floor division by the leaf size, valid for negative indices.
 int leafBlock(int index) { return index >= 0 ? index / kLeafDim : -((-index - 1) / kLeafDim) - 1; }
 
+/// Writes `grids` and the file metadata (generator, source when given, `extra`, voxel
+/// convention) atomically.
+void writeVdbFile(const std::filesystem::path& path, const openvdb::GridPtrVec& grids,
+                  const std::string& generator, const std::string& source,
+                  const openvdb::MetaMap& extra) {
+  openvdb::MetaMap fileMeta;
+  fileMeta.insertMeta("generator", openvdb::StringMetadata(generator));
+  if (!source.empty()) fileMeta.insertMeta("source", openvdb::StringMetadata(source));
+  for (auto it = extra.beginMeta(); it != extra.endMeta(); ++it)
+    fileMeta.insertMeta(it->first, *it->second);
+  fileMeta.insertMeta("voxel_convention",
+                      openvdb::StringMetadata("voxel (i,j,k) is centred on world = origin + "
+                                              "voxelSize * (i,j,k)"));
+  writeAtomically(path, [&](OutputFile& out) {
+    try {
+      SeekableVdbArchive().write(out.stream(), grids, fileMeta);
+    } catch (const openvdb::Exception& e) {
+      throw core::Error("cannot write VDB file '" + path.string() + "': " + e.what());
+    }
+    // OpenVDB does not look at the stream state: writeAtomically's check (OutputFile::close)
+    // reports a full disk or a file-size limit, and the old file stays.
+  });
+}
+
+openvdb::math::Transform::Ptr latticeTransform(const VoxelLattice& lattice) {
+  const auto transform = openvdb::math::Transform::createLinearTransform(lattice.voxelSize);
+  transform->postTranslate(
+      openvdb::Vec3d(lattice.origin.x(), lattice.origin.y(), lattice.origin.z()));
+  return transform;
+}
+
 }  // namespace
 
 VoxelExportStats writeFieldVdb(const std::filesystem::path& path, const core::TensorField& field,
@@ -93,9 +124,7 @@ VoxelExportStats writeFieldVdb(const std::filesystem::path& path, const core::Te
   int floatGrids = 0, vectorGrids = 0;
   for (const auto& p : plans) (p.vector ? vectorGrids : floatGrids)++;
 
-  const auto transform = openvdb::math::Transform::createLinearTransform(lattice.voxelSize);
-  transform->postTranslate(
-      openvdb::Vec3d(lattice.origin.x(), lattice.origin.y(), lattice.origin.z()));
+  const auto transform = latticeTransform(lattice);
   std::vector<openvdb::FloatGrid::Ptr> floatOut;
   std::vector<openvdb::Vec3SGrid::Ptr> vectorOut;
   openvdb::GridPtrVec grids;
@@ -188,24 +217,66 @@ VoxelExportStats writeFieldVdb(const std::filesystem::path& path, const core::Te
   progress.throwIfCancelled();
   progress.report(1.0, "writing");
 
-  openvdb::MetaMap fileMeta;
-  fileMeta.insertMeta("generator", openvdb::StringMetadata(options.generator));
-  if (!options.source.empty()) {
-    fileMeta.insertMeta("source", openvdb::StringMetadata(options.source));
-  }
-  fileMeta.insertMeta("tensor_components", openvdb::StringMetadata("xx,yy,zz,xy,yz,xz"));
-  fileMeta.insertMeta("voxel_convention",
-                      openvdb::StringMetadata("voxel (i,j,k) is centred on world = origin + "
-                                              "voxelSize * (i,j,k)"));
-  writeAtomically(path, [&](OutputFile& out) {
-    try {
-      SeekableVdbArchive().write(out.stream(), grids, fileMeta);
-    } catch (const openvdb::Exception& e) {
-      throw core::Error("cannot write VDB file '" + path.string() + "': " + e.what());
-    }
-    // OpenVDB does not look at the stream state: writeAtomically's check (OutputFile::close)
-    // reports a full disk or a file-size limit, and the old file stays.
+  openvdb::MetaMap extra;
+  extra.insertMeta("tensor_components", openvdb::StringMetadata("xx,yy,zz,xy,yz,xz"));
+  writeVdbFile(path, grids, options.generator, options.source, extra);
+  stats.filesWritten = 1;
+  stats.files = {path};
+  return stats;
+}
+
+VoxelExportStats writeVolumeVdb(const std::filesystem::path& path, const core::ScalarVolume& volume,
+                                const VolumeVdbOptions& options, const core::Progress& progress) {
+  const VoxelLattice& lattice = volume.grid;
+  if (lattice.count() == 0)
+    throw core::Error("VDB export of '" + path.string() + "': the volume has no voxels");
+  if (volume.values.size() != lattice.count() || volume.mask.size() != lattice.count())
+    throw core::Error("VDB export of '" + path.string() +
+                      "': the volume's arrays do not match "
+                      "its grid");
+  initializeOpenVdb();
+  auto grid = openvdb::FloatGrid::create(0.0f);
+  grid->setName(options.gridName);
+  grid->setTransform(latticeTransform(lattice));
+  grid->setSaveFloatAsHalf(false);
+  grid->setGridClass(openvdb::GRID_FOG_VOLUME);
+
+  const std::array<int, 3> blockMin{leafBlock(lattice.min[0]), leafBlock(lattice.min[1]),
+                                    leafBlock(lattice.min[2])};
+  const int nb[3] = {leafBlock(lattice.max[0]) - blockMin[0] + 1,
+                     leafBlock(lattice.max[1]) - blockMin[1] + 1,
+                     leafBlock(lattice.max[2]) - blockMin[2] + 1};
+  std::vector<std::unique_ptr<FloatLeaf>> leaves(std::size_t(nb[0]) * nb[1] * nb[2]);
+  std::vector<std::size_t> active(leaves.size(), 0);
+  tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t b) {
+    if (progress.cancelled()) return;
+    const openvdb::Coord leafOrigin(
+        (blockMin[0] + int(b % nb[0])) * kLeafDim,
+        (blockMin[1] + int(b / nb[0] % nb[1])) * kLeafDim,
+        (blockMin[2] + int(b / (std::size_t(nb[0]) * nb[1]))) * kLeafDim);
+    for (int k = std::max(leafOrigin.z(), lattice.min[2]);
+         k <= std::min(leafOrigin.z() + kLeafDim - 1, lattice.max[2]); ++k)
+      for (int j = std::max(leafOrigin.y(), lattice.min[1]);
+           j <= std::min(leafOrigin.y() + kLeafDim - 1, lattice.max[1]); ++j)
+        for (int i = std::max(leafOrigin.x(), lattice.min[0]);
+             i <= std::min(leafOrigin.x() + kLeafDim - 1, lattice.max[0]); ++i) {
+          const std::size_t v = lattice.offset(i, j, k);
+          if (!volume.mask[v]) continue;
+          if (!leaves[b]) leaves[b] = std::make_unique<FloatLeaf>(leafOrigin, 0.0f, false);
+          leaves[b]->setValueOn(FloatLeaf::coordToOffset(openvdb::Coord(i, j, k)),
+                                volume.values[v]);
+          ++active[b];
+        }
   });
+  progress.throwIfCancelled();
+  VoxelExportStats stats;
+  stats.lattice = lattice;
+  for (std::size_t b = 0; b < leaves.size(); ++b) {  // block order: thread-count independent
+    if (leaves[b]) grid->tree().addLeaf(leaves[b].release());
+    stats.activeVoxels += active[b];
+  }
+  progress.report(1.0, "writing");
+  writeVdbFile(path, {grid}, options.generator, options.source, openvdb::MetaMap());
   stats.filesWritten = 1;
   stats.files = {path};
   return stats;
