@@ -13,6 +13,7 @@ void registerMergeConstraints(graph::NodeRegistry&);
 void registerPropagate(graph::NodeRegistry&);
 void registerLocalSmooth(graph::NodeRegistry&);
 void registerExtractDegenerateCurves(graph::NodeRegistry&);
+void registerGaborNoise(graph::NodeRegistry&);
 void registerExportVtu(graph::NodeRegistry&);
 void registerExportVdb(graph::NodeRegistry&);
 void registerExportExr(graph::NodeRegistry&);
@@ -29,6 +30,7 @@ void registerAll(graph::NodeRegistry& registry) {
   registerPropagate(registry);
   registerLocalSmooth(registry);
   registerExtractDegenerateCurves(registry);
+  registerGaborNoise(registry);
   registerExportVtu(registry);
   registerExportVdb(registry);
   registerExportExr(registry);

@@ -31,4 +31,8 @@ std::size_t instancePointsBytes(const core::InstancePoints& points) {
   return points.points.size() * sizeof(core::InstancePoint);
 }
 
+std::size_t volumeBytes(const core::ScalarVolume& volume) {
+  return volume.values.size() * sizeof(float) + volume.mask.size();
+}
+
 }  // namespace tfd::nodes::detail

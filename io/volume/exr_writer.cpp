@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <exception>
+#include <functional>
 #include <memory>
 #include <set>
 #include <system_error>
@@ -72,59 +73,43 @@ void removeAll(const std::vector<std::filesystem::path>& paths) {
   for (const auto& p : paths) std::filesystem::remove(p, ec);
 }
 
-/// The header of slice k (frame `frame`): size, compression and the tfd.* attributes that
-/// place the slice in space (docs/outputs.md); the channels are added by the caller.
-Imf::Header sliceHeader(const VoxelLattice& lattice, int k, int frame,
-                        const ExrExportOptions& options) {
-  const auto dims = lattice.dims();
-  Imf::Header header(dims[0], dims[1]);
-  header.compression() = Imf::ZIP_COMPRESSION;
-  const double h = lattice.voxelSize;
-  header.insert("tfd.voxelSize", Imf::DoubleAttribute(h));
-  header.insert("tfd.origin", Imf::V3dAttribute(v3d(lattice.origin)));
-  header.insert("tfd.indexMin",
-                Imf::V3iAttribute(Imath::V3i(lattice.min[0], lattice.min[1], lattice.min[2])));
-  header.insert("tfd.indexMax",
-                Imf::V3iAttribute(Imath::V3i(lattice.max[0], lattice.max[1], lattice.max[2])));
-  header.insert("tfd.axis", Imf::StringAttribute("z"));
-  header.insert("tfd.sliceIndex", Imf::IntAttribute(k));
-  header.insert("tfd.frame", Imf::IntAttribute(frame));
-  header.insert("tfd.sliceCount", Imf::IntAttribute(dims[2]));
-  const core::Vec3 firstPixel = lattice.centre(lattice.min[0], lattice.max[1], k);
-  header.insert("tfd.z", Imf::DoubleAttribute(firstPixel.z()));
-  header.insert("tfd.firstPixel", Imf::V3dAttribute(v3d(firstPixel)));
-  header.insert("tfd.columnStep", Imf::V3dAttribute(Imath::V3d(h, 0, 0)));
-  header.insert("tfd.rowStep", Imf::V3dAttribute(Imath::V3d(0, -h, 0)));
-  header.insert("tfd.tensorComponents", Imf::StringAttribute("xx,yy,zz,xy,yz,xz"));
-  header.insert("tfd.generator", Imf::StringAttribute(options.generator));
-  if (!options.source.empty()) {
-    header.insert("tfd.source", Imf::StringAttribute(options.source));
+/// What the slices of one export hold: channel names and a filler for one row of one slice
+/// (pixels of `width` × channel count floats, zero outside), returning how many voxels of the
+/// row are inside. Called concurrently for different rows.
+struct SliceContent {
+  std::vector<std::string> channels;
+  std::function<std::size_t(int j, int k, float* row)> fillRow;
+  bool tensorAttributes = false;  ///< add tfd.tensorComponents
+};
+
+struct SliceOptions {
+  int firstFrame = 0;
+  int sliceCount = 0;
+  std::string generator, source;
+};
+
+/// The z-slices to write: every one, or `count` evenly spaced ones (offsets from min z).
+std::vector<int> chosenSlices(int slices, int count) {
+  std::vector<int> out;
+  if (count <= 0 || count >= slices) {
+    for (int s = 0; s < slices; ++s) out.push_back(s);
+    return out;
   }
-  return header;
+  for (int m = 0; m < count; ++m) out.push_back(int((m + 0.5) * slices / count));
+  return out;
 }
 
-}  // namespace
-
-VoxelExportStats writeFieldExrSlices(const std::string& pattern, const core::TensorField& field,
-                                     const ExrExportOptions& options,
-                                     const core::Progress& progress) {
+VoxelExportStats writeSlices(const std::string& pattern, const VoxelLattice& lattice,
+                             const SliceContent& content, const SliceOptions& options,
+                             const core::Progress& progress) {
   namespace fs = std::filesystem;
   const bool ownsFolder = framePlaceholderInFileName(pattern);  // a bad pattern fails first
-  const VoxelQuantities& quantities = options.quantities;
-  if (quantities.channelCount() == 0) {
-    throw core::Error("EXR export to '" + pattern + "': no quantity selected");
-  }
   VoxelExportStats stats;
-  stats.lattice =
-      latticeForMesh(field.mesh(), options.voxelSize, options.origin, options.maxVoxels);
-  const VoxelLattice& lattice = stats.lattice;
+  stats.lattice = lattice;
   const auto dims = lattice.dims();
   const int width = dims[0], height = dims[1], slices = dims[2];
-
-  std::vector<std::string> names = quantities.channelNames(options.tensorName);
-  if (options.mask) names.push_back("A");
+  const std::vector<std::string>& names = content.channels;
   const int channels = static_cast<int>(names.size());
-  const int quantityChannels = quantities.channelCount();
 
   const fs::path folder = fs::path(expandFramePattern(pattern, 0)).parent_path();
   if (ownsFolder) {  // temporaries of this pattern left by a killed process
@@ -134,40 +119,27 @@ VoxelExportStats writeFieldExrSlices(const std::string& pattern, const core::Ten
   }
   std::vector<std::unique_ptr<StagedFile>> staged;
   std::vector<fs::path> committed;
-  field.mesh().locator();  // build once, outside the parallel loops
+  const std::vector<int> chosen = chosenSlices(slices, options.sliceCount);
   try {
     std::vector<float> pixels(std::size_t(width) * height * channels);
     std::vector<std::size_t> rowActive(height);
-    for (int s = 0; s < slices; ++s) {
+    for (std::size_t n = 0; n < chosen.size(); ++n) {
+      const int s = chosen[n];
       progress.throwIfCancelled();
-      progress.report(double(s) / slices, "writing EXR slices");
+      progress.report(double(n) / chosen.size(), "writing EXR slices");
       const int k = lattice.min[2] + s;
       tbb::parallel_for(0, height, [&](int row) {
         if (progress.cancelled()) return;
-        const int j = lattice.max[1] - row;
-        float* out = pixels.data() + std::size_t(row) * width * channels;
-        std::size_t active = 0;
-        RowSampler sampler(field);
-        for (int c = 0; c < width; ++c, out += channels) {
-          const core::Vec3 p = lattice.centre(lattice.min[0] + c, j, k);
-          const VoxelSample sample = sampler(p);
-          if (sample.inside()) {
-            quantities.evaluate(p, sample, out);
-            if (options.mask) out[quantityChannels] = 1.0f;
-            ++active;
-          } else {
-            std::fill(out, out + channels, 0.0f);
-          }
-        }
-        rowActive[row] = active;
+        rowActive[row] = content.fillRow(lattice.max[1] - row, k,
+                                         pixels.data() + std::size_t(row) * width * channels);
       });
       progress.throwIfCancelled();
       for (std::size_t a : rowActive) stats.activeVoxels += a;
-
       const int frame = options.firstFrame + s;
       const fs::path target = expandFramePattern(pattern, frame);
 
-      Imf::Header header = sliceHeader(lattice, k, frame, options);
+      Imf::Header header(width, height);
+      header.compression() = Imf::ZIP_COMPRESSION;
       Imf::FrameBuffer frameBuffer;
       const std::size_t xStride = sizeof(float) * channels;
       for (int c = 0; c < channels; ++c) {
@@ -175,6 +147,28 @@ VoxelExportStats writeFieldExrSlices(const std::string& pattern, const core::Ten
         frameBuffer.insert(
             names[c], Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(pixels.data() + c), xStride,
                                  xStride * width));
+      }
+      const double h = lattice.voxelSize;
+      header.insert("tfd.voxelSize", Imf::DoubleAttribute(h));
+      header.insert("tfd.origin", Imf::V3dAttribute(v3d(lattice.origin)));
+      header.insert("tfd.indexMin",
+                    Imf::V3iAttribute(Imath::V3i(lattice.min[0], lattice.min[1], lattice.min[2])));
+      header.insert("tfd.indexMax",
+                    Imf::V3iAttribute(Imath::V3i(lattice.max[0], lattice.max[1], lattice.max[2])));
+      header.insert("tfd.axis", Imf::StringAttribute("z"));
+      header.insert("tfd.sliceIndex", Imf::IntAttribute(k));
+      header.insert("tfd.frame", Imf::IntAttribute(frame));
+      header.insert("tfd.sliceCount", Imf::IntAttribute(slices));
+      const core::Vec3 firstPixel = lattice.centre(lattice.min[0], lattice.max[1], k);
+      header.insert("tfd.z", Imf::DoubleAttribute(firstPixel.z()));
+      header.insert("tfd.firstPixel", Imf::V3dAttribute(v3d(firstPixel)));
+      header.insert("tfd.columnStep", Imf::V3dAttribute(Imath::V3d(h, 0, 0)));
+      header.insert("tfd.rowStep", Imf::V3dAttribute(Imath::V3d(0, -h, 0)));
+      if (content.tensorAttributes)
+        header.insert("tfd.tensorComponents", Imf::StringAttribute("xx,yy,zz,xy,yz,xz"));
+      header.insert("tfd.generator", Imf::StringAttribute(options.generator));
+      if (!options.source.empty()) {
+        header.insert("tfd.source", Imf::StringAttribute(options.source));
       }
       staged.push_back(std::make_unique<StagedFile>(target));
       staged.back()->write([&](OutputFile& out) {
@@ -200,9 +194,76 @@ VoxelExportStats writeFieldExrSlices(const std::string& pattern, const core::Ten
   }
   if (ownsFolder) removeOtherSlices(pattern, folder, committed);
   progress.report(1.0, "writing EXR slices");
-  stats.filesWritten = slices;
+  stats.filesWritten = static_cast<int>(committed.size());
   stats.files = committed;
   return stats;
+}
+
+}  // namespace
+
+VoxelExportStats writeFieldExrSlices(const std::string& pattern, const core::TensorField& field,
+                                     const ExrExportOptions& options,
+                                     const core::Progress& progress) {
+  framePlaceholderInFileName(pattern);  // a bad pattern fails first
+  const VoxelQuantities& quantities = options.quantities;
+  if (quantities.channelCount() == 0) {
+    throw core::Error("EXR export to '" + pattern + "': no quantity selected");
+  }
+  const VoxelLattice lattice =
+      latticeForMesh(field.mesh(), options.voxelSize, options.origin, options.maxVoxels);
+  SliceContent content;
+  content.channels = quantities.channelNames(options.tensorName);
+  if (options.mask) content.channels.push_back("A");
+  content.tensorAttributes = true;
+  const int channels = static_cast<int>(content.channels.size());
+  const int quantityChannels = quantities.channelCount();
+  content.fillRow = [&](int j, int k, float* out) {
+    std::size_t active = 0;
+    RowSampler sampler(field);
+    for (int i = lattice.min[0]; i <= lattice.max[0]; ++i, out += channels) {
+      const core::Vec3 p = lattice.centre(i, j, k);
+      const VoxelSample sample = sampler(p);
+      if (sample.inside()) {
+        quantities.evaluate(p, sample, out);
+        if (options.mask) out[quantityChannels] = 1.0f;
+        ++active;
+      } else {
+        std::fill(out, out + channels, 0.0f);
+      }
+    }
+    return active;
+  };
+  field.mesh().locator();  // build once, outside the parallel loops
+  return writeSlices(pattern, lattice, content,
+                     {options.firstFrame, options.sliceCount, options.generator, options.source},
+                     progress);
+}
+
+VoxelExportStats writeVolumeExrSlices(const std::string& pattern, const core::ScalarVolume& volume,
+                                      const VolumeExrOptions& options,
+                                      const core::Progress& progress) {
+  framePlaceholderInFileName(pattern);  // a bad pattern fails first
+  const VoxelLattice& lattice = volume.grid;
+  if (lattice.count() == 0)
+    throw core::Error("EXR export to '" + pattern + "': the volume has no voxels");
+  if (volume.values.size() != lattice.count() || volume.mask.size() != lattice.count())
+    throw core::Error("EXR export to '" + pattern + "': the volume's arrays do not match its grid");
+  SliceContent content;
+  content.channels = {"R", "G", "B", "A"};
+  content.fillRow = [&](int j, int k, float* out) {
+    std::size_t active = 0;
+    for (int i = lattice.min[0]; i <= lattice.max[0]; ++i, out += 4) {
+      const std::size_t v = lattice.offset(i, j, k);
+      const float value = volume.mask[v] ? volume.values[v] : 0.0f;
+      out[0] = out[1] = out[2] = value;
+      out[3] = volume.mask[v] ? 1.0f : 0.0f;
+      active += volume.mask[v] ? 1 : 0;
+    }
+    return active;
+  };
+  return writeSlices(pattern, lattice, content,
+                     {options.firstFrame, options.sliceCount, options.generator, options.source},
+                     progress);
 }
 
 }  // namespace tfd::io

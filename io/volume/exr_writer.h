@@ -19,13 +19,18 @@
 //   density                         "density"
 //   A                               mask: 1 where the voxel centre is inside the mesh (optional)
 // Pixels outside the mesh are 0 in every channel.
+// A ScalarVolume (writeVolumeExrSlices) is written on its own grid as R, G, B (the value, so
+// any viewer shows it as grey levels) and A (its mask), 0 outside the mask.
+//
+// Slices: every z-slice, or with sliceCount = n > 0 only n evenly spaced ones (offsets
+// s = ⌊(m + ½) N / n⌋, m = 0 … n−1, of the N slices), numbered by s as if all were written.
 //
 // Header attributes (besides the standard ones; compression ZIP, lossless):
 //   tfd.voxelSize (double), tfd.origin (v3d, world centre of voxel index (0,0,0)),
 //   tfd.indexMin / tfd.indexMax (v3i, the lattice's index box), tfd.axis (string "z"),
 //   tfd.sliceIndex (int, voxel index k), tfd.frame (int), tfd.sliceCount (int),
 //   tfd.z (double, world z of the slice), tfd.firstPixel (v3d), tfd.columnStep (v3d, +x·h),
-//   tfd.rowStep (v3d, −y·h), tfd.tensorComponents (string "xx,yy,zz,xy,yz,xz"),
+//   tfd.rowStep (v3d, −y·h), tfd.tensorComponents (string "xx,yy,zz,xy,yz,xz"; fields only),
 //   tfd.generator, tfd.source (strings; source only when given).
 //
 // Atomicity: every slice is first written to a hidden temporary beside its target
@@ -40,6 +45,7 @@
 #include <string>
 
 #include "core/progress.h"
+#include "core/scalar_volume.h"
 #include "core/tensor_field.h"
 #include "io/volume/field_resample.h"
 #include "io/volume/frame_pattern.h"
@@ -55,6 +61,7 @@ struct ExrExportOptions {
   std::string tensorName = "T";
   bool mask = true;    ///< add the channel "A" (1 inside, 0 outside)
   int firstFrame = 0;  ///< frame number of the lowest slice
+  int sliceCount = 0;  ///< 0: every slice; n > 0: n evenly spaced slices
   double maxVoxels = kDefaultMaxVoxels;
   std::string generator = "tfd";
   std::string source;
@@ -67,5 +74,20 @@ struct ExrExportOptions {
 VoxelExportStats writeFieldExrSlices(const std::string& pattern, const core::TensorField& field,
                                      const ExrExportOptions& options,
                                      const core::Progress& progress = core::Progress());
+
+struct VolumeExrOptions {
+  int firstFrame = 0;  ///< frame number of the lowest slice
+  int sliceCount = 0;  ///< 0: every slice; n > 0: n evenly spaced slices
+  std::string generator = "tfd";
+  std::string source;
+};
+
+/// Writes the volume's z-slices (see above: R, G, B the value, A the mask), with the same
+/// header attributes, atomicity and ownership of the pattern's files as writeFieldExrSlices.
+/// Throws core::Error for a bad pattern, an empty volume or arrays that do not match its grid,
+/// or a slice that cannot be written; core::Cancelled when cancelled.
+VoxelExportStats writeVolumeExrSlices(const std::string& pattern, const core::ScalarVolume& volume,
+                                      const VolumeExrOptions& options,
+                                      const core::Progress& progress = core::Progress());
 
 }  // namespace tfd::io

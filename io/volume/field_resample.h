@@ -17,6 +17,7 @@
 #include "core/progress.h"
 #include "core/tensor.h"
 #include "core/tensor_field.h"
+#include "core/voxel_grid.h"
 
 namespace tfd::io {
 
@@ -24,23 +25,9 @@ namespace tfd::io {
 /// float each is already 800 MB per grid).
 inline constexpr double kDefaultMaxVoxels = 2e8;
 
-/// A box of voxel indices [min, max] (inclusive) on the lattice described above.
-struct VoxelLattice {
-  double voxelSize = 1;
-  core::Vec3 origin = core::Vec3::Zero();
-  std::array<int, 3> min{0, 0, 0};
-  std::array<int, 3> max{-1, -1, -1};
-
-  std::array<int, 3> dims() const {
-    return {max[0] - min[0] + 1, max[1] - min[1] + 1, max[2] - min[2] + 1};
-  }
-  std::size_t count() const {
-    const auto d = dims();
-    return std::size_t(d[0]) * std::size_t(d[1]) * std::size_t(d[2]);
-  }
-  /// World position of the centre of voxel (i, j, k).
-  core::Vec3 centre(int i, int j, int k) const { return origin + voxelSize * core::Vec3(i, j, k); }
-};
+/// A box of voxel indices [min, max] (inclusive) on the lattice described above (the same
+/// convention as core::VoxelGrid, which it is).
+using VoxelLattice = core::VoxelGrid;
 
 /// The smallest index box holding every voxel centre inside the mesh's bounding box.
 /// Throws core::Error when voxelSize is not a finite positive number, when origin is not

@@ -74,95 +74,35 @@ class SeekableVdbArchive : public openvdb::io::Archive {
 /// Floor division by the leaf size, valid for negative indices.
 int leafBlock(int index) { return index >= 0 ? index / kLeafDim : -((-index - 1) / kLeafDim) - 1; }
 
-/// The output grids, one per plan, in plan order (float and vector grids also by kind).
-struct OutputGrids {
-  std::vector<openvdb::FloatGrid::Ptr> floats;
-  std::vector<openvdb::Vec3SGrid::Ptr> vectors;
-  openvdb::GridPtrVec all;
-};
-
-OutputGrids makeGrids(const std::vector<GridPlan>& plans, const VoxelLattice& lattice) {
-  const auto transform = openvdb::math::Transform::createLinearTransform(lattice.voxelSize);
-  transform->postTranslate(
-      openvdb::Vec3d(lattice.origin.x(), lattice.origin.y(), lattice.origin.z()));
-  OutputGrids out;
-  for (const auto& p : plans) {
-    openvdb::GridBase::Ptr grid;
-    if (p.vector) {
-      auto g = openvdb::Vec3SGrid::create(openvdb::Vec3s(0, 0, 0));
-      g->setVectorType(openvdb::VEC_INVARIANT);
-      out.vectors.push_back(g);
-      grid = g;
-    } else {
-      auto g = openvdb::FloatGrid::create(0.0f);
-      out.floats.push_back(g);
-      grid = g;
-    }
-    grid->setName(p.name);
-    grid->setTransform(transform->copy());
-    grid->setSaveFloatAsHalf(false);
-    grid->setGridClass(p.tensorDerived ? openvdb::GRID_UNKNOWN : openvdb::GRID_FOG_VOLUME);
-    if (p.tensorDerived) {
-      grid->insertMeta("tensor_components", openvdb::StringMetadata("xx,yy,zz,xy,yz,xz"));
-    }
-    if (!p.component.empty()) grid->insertMeta("component", openvdb::StringMetadata(p.component));
-    out.all.push_back(grid);
-  }
-  return out;
-}
-
-/// Samples the voxels of the lattice inside one leaf block into `out` (leaves are made on the
-/// first active voxel).
-void sampleBlock(const core::TensorField& field, const VoxelQuantities& quantities,
-                 const std::vector<GridPlan>& plans, const VoxelLattice& lattice,
-                 const openvdb::Coord& leafOrigin, int floatGrids, int vectorGrids,
-                 BlockLeaves& out) {
-  std::vector<float> values(quantities.channelCount());
-  RowSampler sampler(field);
-  for (int k = std::max(leafOrigin.z(), lattice.min[2]);
-       k <= std::min(leafOrigin.z() + kLeafDim - 1, lattice.max[2]); ++k) {
-    for (int j = std::max(leafOrigin.y(), lattice.min[1]);
-         j <= std::min(leafOrigin.y() + kLeafDim - 1, lattice.max[1]); ++j) {
-      for (int i = std::max(leafOrigin.x(), lattice.min[0]);
-           i <= std::min(leafOrigin.x() + kLeafDim - 1, lattice.max[0]); ++i) {
-        const core::Vec3 p = lattice.centre(i, j, k);
-        const VoxelSample sample = sampler(p);
-        if (!sample.inside()) continue;
-        if (out.active++ == 0) {
-          for (int g = 0; g < floatGrids; ++g)
-            out.floats.push_back(std::make_unique<FloatLeaf>(leafOrigin, 0.0f, false));
-          for (int g = 0; g < vectorGrids; ++g) {
-            out.vectors.push_back(
-                std::make_unique<Vec3Leaf>(leafOrigin, openvdb::Vec3s(0, 0, 0), false));
-          }
-        }
-        quantities.evaluate(p, sample, values.data());
-        const openvdb::Index offset = FloatLeaf::coordToOffset(openvdb::Coord(i, j, k));
-        int f = 0, v = 0;
-        for (const auto& plan : plans) {
-          const float* c = values.data() + plan.firstChannel;
-          if (plan.vector) {
-            out.vectors[v++]->setValueOn(offset, openvdb::Vec3s(c[0], c[1], c[2]));
-          } else {
-            out.floats[f++]->setValueOn(offset, c[0]);
-          }
-        }
-      }
-    }
-  }
-}
-
-openvdb::MetaMap fileMetadata(const VdbExportOptions& options) {
+/// Writes `grids` and the file metadata (generator, source when given, `extra`, voxel
+/// convention) atomically.
+void writeVdbFile(const std::filesystem::path& path, const openvdb::GridPtrVec& grids,
+                  const std::string& generator, const std::string& source,
+                  const openvdb::MetaMap& extra) {
   openvdb::MetaMap fileMeta;
-  fileMeta.insertMeta("generator", openvdb::StringMetadata(options.generator));
-  if (!options.source.empty()) {
-    fileMeta.insertMeta("source", openvdb::StringMetadata(options.source));
-  }
-  fileMeta.insertMeta("tensor_components", openvdb::StringMetadata("xx,yy,zz,xy,yz,xz"));
+  fileMeta.insertMeta("generator", openvdb::StringMetadata(generator));
+  if (!source.empty()) fileMeta.insertMeta("source", openvdb::StringMetadata(source));
+  for (auto it = extra.beginMeta(); it != extra.endMeta(); ++it)
+    fileMeta.insertMeta(it->first, *it->second);
   fileMeta.insertMeta("voxel_convention",
                       openvdb::StringMetadata("voxel (i,j,k) is centred on world = origin + "
                                               "voxelSize * (i,j,k)"));
-  return fileMeta;
+  writeAtomically(path, [&](OutputFile& out) {
+    try {
+      SeekableVdbArchive().write(out.stream(), grids, fileMeta);
+    } catch (const openvdb::Exception& e) {
+      throw core::Error("cannot write VDB file '" + path.string() + "': " + e.what());
+    }
+    // OpenVDB does not look at the stream state: writeAtomically's check (OutputFile::close)
+    // reports a full disk or a file-size limit, and the old file stays.
+  });
+}
+
+openvdb::math::Transform::Ptr latticeTransform(const VoxelLattice& lattice) {
+  const auto transform = openvdb::math::Transform::createLinearTransform(lattice.voxelSize);
+  transform->postTranslate(
+      openvdb::Vec3d(lattice.origin.x(), lattice.origin.y(), lattice.origin.z()));
+  return transform;
 }
 
 }  // namespace
@@ -180,9 +120,36 @@ VoxelExportStats writeFieldVdb(const std::filesystem::path& path, const core::Te
   initializeOpenVdb();
 
   const std::vector<GridPlan> plans = planGrids(quantities, options.tensorName);
+  const int channels = quantities.channelCount();
   int floatGrids = 0, vectorGrids = 0;
   for (const auto& p : plans) (p.vector ? vectorGrids : floatGrids)++;
-  OutputGrids grids = makeGrids(plans, lattice);
+
+  const auto transform = latticeTransform(lattice);
+  std::vector<openvdb::FloatGrid::Ptr> floatOut;
+  std::vector<openvdb::Vec3SGrid::Ptr> vectorOut;
+  openvdb::GridPtrVec grids;
+  for (const auto& p : plans) {
+    openvdb::GridBase::Ptr grid;
+    if (p.vector) {
+      auto g = openvdb::Vec3SGrid::create(openvdb::Vec3s(0, 0, 0));
+      g->setVectorType(openvdb::VEC_INVARIANT);
+      vectorOut.push_back(g);
+      grid = g;
+    } else {
+      auto g = openvdb::FloatGrid::create(0.0f);
+      floatOut.push_back(g);
+      grid = g;
+    }
+    grid->setName(p.name);
+    grid->setTransform(transform->copy());
+    grid->setSaveFloatAsHalf(false);
+    grid->setGridClass(p.tensorDerived ? openvdb::GRID_UNKNOWN : openvdb::GRID_FOG_VOLUME);
+    if (p.tensorDerived) {
+      grid->insertMeta("tensor_components", openvdb::StringMetadata("xx,yy,zz,xy,yz,xz"));
+    }
+    if (!p.component.empty()) grid->insertMeta("component", openvdb::StringMetadata(p.component));
+    grids.push_back(grid);
+  }
 
   // Leaf blocks covering the lattice, processed one z-layer of blocks at a time.
   const std::array<int, 3> blockMin{leafBlock(lattice.min[0]), leafBlock(lattice.min[1]),
@@ -199,17 +166,50 @@ VoxelExportStats writeFieldVdb(const std::filesystem::path& path, const core::Te
     progress.report(double(bz - blockMin[2]) / layers, "sampling voxels");
     tbb::parallel_for(0, nbx * nby, [&](int b) {
       if (progress.cancelled()) return;
+      BlockLeaves& out = layer[b];
       const openvdb::Coord leafOrigin((blockMin[0] + b % nbx) * kLeafDim,
                                       (blockMin[1] + b / nbx) * kLeafDim, bz * kLeafDim);
-      sampleBlock(field, quantities, plans, lattice, leafOrigin, floatGrids, vectorGrids, layer[b]);
+      std::vector<float> values(channels);
+      RowSampler sampler(field);
+      for (int k = std::max(leafOrigin.z(), lattice.min[2]);
+           k <= std::min(leafOrigin.z() + kLeafDim - 1, lattice.max[2]); ++k) {
+        for (int j = std::max(leafOrigin.y(), lattice.min[1]);
+             j <= std::min(leafOrigin.y() + kLeafDim - 1, lattice.max[1]); ++j) {
+          for (int i = std::max(leafOrigin.x(), lattice.min[0]);
+               i <= std::min(leafOrigin.x() + kLeafDim - 1, lattice.max[0]); ++i) {
+            const core::Vec3 p = lattice.centre(i, j, k);
+            const VoxelSample sample = sampler(p);
+            if (!sample.inside()) continue;
+            if (out.active++ == 0) {
+              for (int g = 0; g < floatGrids; ++g)
+                out.floats.push_back(std::make_unique<FloatLeaf>(leafOrigin, 0.0f, false));
+              for (int g = 0; g < vectorGrids; ++g) {
+                out.vectors.push_back(
+                    std::make_unique<Vec3Leaf>(leafOrigin, openvdb::Vec3s(0, 0, 0), false));
+              }
+            }
+            quantities.evaluate(p, sample, values.data());
+            const openvdb::Index offset = FloatLeaf::coordToOffset(openvdb::Coord(i, j, k));
+            int f = 0, v = 0;
+            for (const auto& plan : plans) {
+              const float* c = values.data() + plan.firstChannel;
+              if (plan.vector) {
+                out.vectors[v++]->setValueOn(offset, openvdb::Vec3s(c[0], c[1], c[2]));
+              } else {
+                out.floats[f++]->setValueOn(offset, c[0]);
+              }
+            }
+          }
+        }
+      }
     });
     progress.throwIfCancelled();
     // Serial insertion in block order: the trees do not depend on the thread count.
     for (auto& block : layer) {
       for (int g = 0; g < int(block.floats.size()); ++g)
-        grids.floats[g]->tree().addLeaf(block.floats[g].release());
+        floatOut[g]->tree().addLeaf(block.floats[g].release());
       for (int g = 0; g < int(block.vectors.size()); ++g)
-        grids.vectors[g]->tree().addLeaf(block.vectors[g].release());
+        vectorOut[g]->tree().addLeaf(block.vectors[g].release());
       stats.activeVoxels += block.active;
       block = BlockLeaves();
     }
@@ -217,16 +217,66 @@ VoxelExportStats writeFieldVdb(const std::filesystem::path& path, const core::Te
   progress.throwIfCancelled();
   progress.report(1.0, "writing");
 
-  const openvdb::MetaMap fileMeta = fileMetadata(options);
-  writeAtomically(path, [&](OutputFile& out) {
-    try {
-      SeekableVdbArchive().write(out.stream(), grids.all, fileMeta);
-    } catch (const openvdb::Exception& e) {
-      throw core::Error("cannot write VDB file '" + path.string() + "': " + e.what());
-    }
-    // OpenVDB does not look at the stream state: writeAtomically's check (OutputFile::close)
-    // reports a full disk or a file-size limit, and the old file stays.
+  openvdb::MetaMap extra;
+  extra.insertMeta("tensor_components", openvdb::StringMetadata("xx,yy,zz,xy,yz,xz"));
+  writeVdbFile(path, grids, options.generator, options.source, extra);
+  stats.filesWritten = 1;
+  stats.files = {path};
+  return stats;
+}
+
+VoxelExportStats writeVolumeVdb(const std::filesystem::path& path, const core::ScalarVolume& volume,
+                                const VolumeVdbOptions& options, const core::Progress& progress) {
+  const VoxelLattice& lattice = volume.grid;
+  if (lattice.count() == 0)
+    throw core::Error("VDB export of '" + path.string() + "': the volume has no voxels");
+  if (volume.values.size() != lattice.count() || volume.mask.size() != lattice.count())
+    throw core::Error("VDB export of '" + path.string() +
+                      "': the volume's arrays do not match "
+                      "its grid");
+  initializeOpenVdb();
+  auto grid = openvdb::FloatGrid::create(0.0f);
+  grid->setName(options.gridName);
+  grid->setTransform(latticeTransform(lattice));
+  grid->setSaveFloatAsHalf(false);
+  grid->setGridClass(openvdb::GRID_FOG_VOLUME);
+
+  const std::array<int, 3> blockMin{leafBlock(lattice.min[0]), leafBlock(lattice.min[1]),
+                                    leafBlock(lattice.min[2])};
+  const int nb[3] = {leafBlock(lattice.max[0]) - blockMin[0] + 1,
+                     leafBlock(lattice.max[1]) - blockMin[1] + 1,
+                     leafBlock(lattice.max[2]) - blockMin[2] + 1};
+  std::vector<std::unique_ptr<FloatLeaf>> leaves(std::size_t(nb[0]) * nb[1] * nb[2]);
+  std::vector<std::size_t> active(leaves.size(), 0);
+  tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t b) {
+    if (progress.cancelled()) return;
+    const openvdb::Coord leafOrigin(
+        (blockMin[0] + int(b % nb[0])) * kLeafDim,
+        (blockMin[1] + int(b / nb[0] % nb[1])) * kLeafDim,
+        (blockMin[2] + int(b / (std::size_t(nb[0]) * nb[1]))) * kLeafDim);
+    for (int k = std::max(leafOrigin.z(), lattice.min[2]);
+         k <= std::min(leafOrigin.z() + kLeafDim - 1, lattice.max[2]); ++k)
+      for (int j = std::max(leafOrigin.y(), lattice.min[1]);
+           j <= std::min(leafOrigin.y() + kLeafDim - 1, lattice.max[1]); ++j)
+        for (int i = std::max(leafOrigin.x(), lattice.min[0]);
+             i <= std::min(leafOrigin.x() + kLeafDim - 1, lattice.max[0]); ++i) {
+          const std::size_t v = lattice.offset(i, j, k);
+          if (!volume.mask[v]) continue;
+          if (!leaves[b]) leaves[b] = std::make_unique<FloatLeaf>(leafOrigin, 0.0f, false);
+          leaves[b]->setValueOn(FloatLeaf::coordToOffset(openvdb::Coord(i, j, k)),
+                                volume.values[v]);
+          ++active[b];
+        }
   });
+  progress.throwIfCancelled();
+  VoxelExportStats stats;
+  stats.lattice = lattice;
+  for (std::size_t b = 0; b < leaves.size(); ++b) {  // block order: thread-count independent
+    if (leaves[b]) grid->tree().addLeaf(leaves[b].release());
+    stats.activeVoxels += active[b];
+  }
+  progress.report(1.0, "writing");
+  writeVdbFile(path, {grid}, options.generator, options.source, openvdb::MetaMap());
   stats.filesWritten = 1;
   stats.files = {path};
   return stats;

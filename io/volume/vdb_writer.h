@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "core/progress.h"
+#include "core/scalar_volume.h"
 #include "core/tensor_field.h"
 #include "io/volume/field_resample.h"
 #include "io/volume/voxel_quantities.h"
@@ -54,5 +55,23 @@ struct VoxelExportStats {
 VoxelExportStats writeFieldVdb(const std::filesystem::path& path, const core::TensorField& field,
                                const VdbExportOptions& options,
                                const core::Progress& progress = core::Progress());
+
+struct VolumeVdbOptions {
+  std::string gridName = "density";
+  std::string generator = "tfd";  ///< file metadata "generator"
+  std::string source;             ///< file metadata "source" (e.g. graph and node)
+};
+
+/// Writes a scalar volume as one FloatGrid named `gridName` (default "density"), grid class
+/// fog volume, so Houdini and Blender render it with no set-up: background 0, active exactly at
+/// the voxels of the volume's mask, same transform and voxel convention as writeFieldVdb
+/// (voxel (i, j, k) of the volume's grid is index coordinate (i, j, k)), 32-bit floats. File
+/// metadata: generator, source (when given), voxel_convention. Leaves are built in parallel
+/// and inserted in block order (identical files for any thread count); written atomically.
+/// Throws core::Error for an empty volume, arrays that do not match its grid, or a file that
+/// cannot be written (naming it); core::Cancelled when cancelled.
+VoxelExportStats writeVolumeVdb(const std::filesystem::path& path, const core::ScalarVolume& volume,
+                                const VolumeVdbOptions& options,
+                                const core::Progress& progress = core::Progress());
 
 }  // namespace tfd::io

@@ -1,4 +1,4 @@
-// ExportVDB: the field resampled on a voxel grid, for Houdini and Blender.
+// ExportVDB: the field resampled on a voxel grid, or a scalar volume, for Houdini and Blender.
 #include "io/volume/vdb_writer.h"
 
 #include "graph/node_registry.h"
@@ -11,25 +11,35 @@ namespace {
 
 void declare(graph::NodeDecl& d) {
   d.doc(
-       "Writes the field to an OpenVDB file: float grids `T.xx T.yy T.zz T.xy T.yz T.xz`, "
+       "Writes an OpenVDB file. From `field`: float grids `T.xx T.yy T.zz T.xy T.yz T.xz`, "
        "optionally Vec3 grids `T.eigval` and `T.e1 T.e2 T.e3`; voxels whose centre lies inside "
-       "the mesh are active, the rest inactive with value 0.")
+       "the mesh are active, the rest inactive with value 0. From `volume`: one float grid "
+       "`density` of class fog volume on the volume's voxels, active where its mask is set. "
+       "Connect exactly one of the two inputs.")
       .category("Export")
       .sideEffect();
-  d.input<core::TensorField>("field");
+  declareVoxelInputs(d);
   d.param<std::string>("path").byDefault("field.vdb").outputFile("*.vdb").doc("Output file.");
   declareVoxelParams(d, "quantities");
   d.migration(1, [](graph::Json& p) { splitQuantityText(p, "quantities", "quantities"); });
 }
 
 void cook(graph::CookContext& c) {
-  const auto field = c.input<core::TensorField>("field");
-  io::VdbExportOptions o;
-  o.voxelSize = voxelSizeOf(c, field->mesh());
-  o.quantities = quantitiesOf(c, "quantities");
-  o.source = "node " + c.nodeName();
+  const VoxelSource source = voxelSourceOf(c, "quantities");
   const std::filesystem::path path = c.path("path");
-  const io::VoxelExportStats stats = io::writeFieldVdb(path, *field, o, progressOf(c));
+  io::VoxelExportStats stats;
+  if (source == VoxelSource::Volume) {
+    io::VolumeVdbOptions o;
+    o.source = "node " + c.nodeName();
+    stats = io::writeVolumeVdb(path, *c.input<core::ScalarVolume>("volume"), o, progressOf(c));
+  } else {
+    const auto field = c.input<core::TensorField>("field");
+    io::VdbExportOptions o;
+    o.voxelSize = voxelSizeOf(c, field->mesh());
+    o.quantities = quantitiesOf(c, "quantities");
+    o.source = "node " + c.nodeName();
+    stats = io::writeFieldVdb(path, *field, o, progressOf(c));
+  }
   for (const std::filesystem::path& file : stats.files) c.wroteFile(file);
   c.info(voxelInfo(path.string(), stats));
 }

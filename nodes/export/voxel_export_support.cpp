@@ -4,14 +4,20 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "graph/errors.h"
+#include "nodes/value_types.h"
 
 namespace tfd::nodes {
 
-void declareVoxelParams(graph::NodeDecl& d, const std::string& quantitiesName) {
+void declareVoxelSize(graph::NodeDecl& d) {
   d.param<double>("voxel_size")
       .byDefault(0)
       .min(0)
       .doc("World units per voxel; 0 picks the mesh's longest bounding-box side / 128.");
+}
+
+void declareVoxelParams(graph::NodeDecl& d, const std::string& quantitiesName) {
+  declareVoxelSize(d);
   d.param<std::vector<std::string>>(quantitiesName)
       .byDefault({"tensor"})
       .choices(kVoxelQuantityChoices)
@@ -19,6 +25,38 @@ void declareVoxelParams(graph::NodeDecl& d, const std::string& quantitiesName) {
       .doc(
           "Any of: tensor (six components xx yy zz xy yz xz), eigenvalues (l1 >= l2 >= l3), "
           "eigenvectors (e1 e2 e3, sign arbitrary).");
+}
+
+void declareVoxelInputs(graph::NodeDecl& d) {
+  d.input<core::TensorField>("field").optional().doc(
+      "The field to resample (connect this or `volume`, not both).");
+  d.input<core::ScalarVolume>("volume").optional().doc(
+      "A scalar volume (e.g. GaborNoise), written on its own voxels; `voxel_size` and the "
+      "quantities apply to `field` only.");
+}
+
+VoxelSource voxelSourceOf(const graph::CookContext& c, const std::string& quantitiesName) {
+  const bool field = c.hasInput("field"), volume = c.hasInput("volume");
+  if (field && volume) {
+    throw graph::NodeError(
+        "inputs 'field' and 'volume' are both connected: connect one of them (use one exporter "
+        "per input)");
+  }
+  if (!field && !volume) {
+    throw graph::NodeError("no input: connect input 'field' (a tensor field) or 'volume'");
+  }
+  if (field) return VoxelSource::Field;
+  if (c.param<double>("voxel_size") != 0) {
+    throw c.paramError("voxel_size",
+                       "applies to input 'field' only: a volume is written on its own voxels "
+                       "(set them where it is made); use 0 with input 'volume'");
+  }
+  if (c.param<std::vector<std::string>>(quantitiesName) != std::vector<std::string>{"tensor"}) {
+    throw c.paramError(quantitiesName,
+                       "applies to input 'field' only; leave it at [\"tensor\"] with input "
+                       "'volume'");
+  }
+  return VoxelSource::Volume;
 }
 
 void splitQuantityText(graph::Json& params, const std::string& from, const std::string& to) {
@@ -52,6 +90,10 @@ double voxelSizeOf(const graph::CookContext& c, const core::TetMesh& mesh) {
     throw c.paramError("voxel_size", e.what());
   }
   return h;
+}
+
+core::VoxelGrid voxelGridOf(const graph::CookContext& c, const core::TetMesh& mesh) {
+  return io::latticeForMesh(mesh, voxelSizeOf(c, mesh));
 }
 
 io::VoxelQuantities quantitiesOf(const graph::CookContext& c, const std::string& name) {

@@ -16,8 +16,24 @@ inline const graph::Choices<bool io::VoxelQuantities::*> kVoxelQuantityChoices{
     {"eigenvalues", &io::VoxelQuantities::eigenvalues},
     {"eigenvectors", &io::VoxelQuantities::eigenvectors}};
 
-/// Declares `voxel_size` (0: automatic) and the quantity list named `quantitiesName`.
+/// Declares `voxel_size` (0: automatic, the mesh's longest bounding-box side / 128).
+void declareVoxelSize(graph::NodeDecl& d);
+
+/// Declares `voxel_size` (declareVoxelSize) and the quantity list named `quantitiesName`.
 void declareVoxelParams(graph::NodeDecl& d, const std::string& quantitiesName);
+
+/// Declares the inputs of a voxel exporter: `field` and `volume`, both optional (exactly one
+/// must be connected: voxelSourceOf).
+void declareVoxelInputs(graph::NodeDecl& d);
+
+/// What a voxel exporter writes: its `field` (resampled, with the chosen quantities) or its
+/// `volume` (on the volume's own voxels).
+enum class VoxelSource { Field, Volume };
+
+/// Exactly one of the inputs `field` and `volume` must be connected, and with `volume` the
+/// field-only parameters (`voxel_size` other than 0, quantities other than the default
+/// ["tensor"], in the list `quantitiesName`) are errors naming them.
+VoxelSource voxelSourceOf(const graph::CookContext& c, const std::string& quantitiesName);
 
 /// Migration of typeVersion 1 parameters: the comma-separated string `from` ("tensor,
 /// eigenvalues") becomes the list `to` (["tensor", "eigenvalues"]).
@@ -28,6 +44,9 @@ double voxelSizeOf(const graph::CookContext& c, const core::TetMesh& mesh);
 
 /// The quantities of the list parameter `name`; a repeated one is an error naming it.
 io::VoxelQuantities quantitiesOf(const graph::CookContext& c, const std::string& name);
+
+/// The voxel grid of `voxel_size` (voxelSizeOf) over the mesh's bounding box.
+core::VoxelGrid voxelGridOf(const graph::CookContext& c, const core::TetMesh& mesh);
 
 /// "wrote PATH: NX x NY x NZ voxels of SIZE, N active".
 std::string voxelInfo(const std::string& what, const io::VoxelExportStats& stats);
