@@ -17,6 +17,9 @@ void registerExportVtu(graph::NodeRegistry&);
 void registerExportVdb(graph::NodeRegistry&);
 void registerExportExr(graph::NodeRegistry&);
 void registerExportCurves(graph::NodeRegistry&);
+void registerHyperstreamlines(graph::NodeRegistry&);
+void registerStreamtubes(graph::NodeRegistry&);
+void registerExportLines(graph::NodeRegistry&);
 
 void registerAll(graph::NodeRegistry& registry) {
   registerTetMesh(registry);
@@ -31,6 +34,9 @@ void registerAll(graph::NodeRegistry& registry) {
   registerExportVdb(registry);
   registerExportExr(registry);
   registerExportCurves(registry);
+  registerHyperstreamlines(registry);
+  registerStreamtubes(registry);
+  registerExportLines(registry);
 }
 
 }  // namespace tfd::nodes
