@@ -13,6 +13,7 @@ void take(DisplayValues& out, const graph::Value& v) {
   if (auto m = v.as<core::TetMesh>(); m && !out.mesh) out.mesh = m;
   if (auto f = v.as<core::TensorField>(); f && !out.field) out.field = f;
   if (auto c = v.as<core::DegenerateCurves>(); c && !out.curves) out.curves = c;
+  if (auto l = v.as<core::Polylines>(); l && !out.lines) out.lines = l;
 }
 
 bool hasConstraintOutput(const graph::Node& n) {

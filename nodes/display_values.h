@@ -1,9 +1,9 @@
 #pragma once
 // What a viewport or `tfd render` shows for a node: the drawable values of its cooked outputs
-// (a mesh, a field, degenerate curves, design elements), completed from upstream where the node
-// itself holds no geometry (curves are drawn inside the boundary of the mesh they came from).
-// The display node is the one whose ui object carries {"display": true} (the editor's display
-// flag, Houdini's habit), else the last node in file order that has outputs.
+// (a mesh, a field, degenerate curves, traced lines, design elements), completed from upstream
+// where the node itself holds no geometry (curves are drawn inside the boundary of the mesh they
+// came from). The display node is the one whose ui object carries {"display": true} (the editor's
+// display flag, Houdini's habit), else the last node in file order that has outputs.
 #include <memory>
 #include <string>
 #include <string_view>
@@ -26,8 +26,9 @@ struct DisplayValues {
   std::shared_ptr<const core::TetMesh> mesh;       ///< boundary to draw (may come from upstream)
   std::shared_ptr<const core::TensorField> field;  ///< for a cutting plane
   std::shared_ptr<const core::DegenerateCurves> curves;
+  std::shared_ptr<const core::Polylines> lines;
   std::vector<std::shared_ptr<const core::ConstraintSet>> constraints;
-  bool empty() const { return !mesh && !field && !curves && constraints.empty(); }
+  bool empty() const { return !mesh && !field && !curves && !lines && constraints.empty(); }
 };
 
 /// The values to draw for `node` after `result` (values of nodes that did not cook are missing).

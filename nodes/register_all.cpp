@@ -20,6 +20,9 @@ void registerExportExr(graph::NodeRegistry&);
 void registerExportCurves(graph::NodeRegistry&);
 void registerElementSynthesis(graph::NodeRegistry&);
 void registerExportMesh(graph::NodeRegistry&);
+void registerHyperstreamlines(graph::NodeRegistry&);
+void registerStreamtubes(graph::NodeRegistry&);
+void registerExportLines(graph::NodeRegistry&);
 
 void registerAll(graph::NodeRegistry& registry) {
   registerTetMesh(registry);
@@ -37,6 +40,9 @@ void registerAll(graph::NodeRegistry& registry) {
   registerExportCurves(registry);
   registerElementSynthesis(registry);
   registerExportMesh(registry);
+  registerHyperstreamlines(registry);
+  registerStreamtubes(registry);
+  registerExportLines(registry);
 }
 
 }  // namespace tfd::nodes

@@ -34,5 +34,6 @@ std::size_t instancePointsBytes(const core::InstancePoints& points) {
 std::size_t volumeBytes(const core::ScalarVolume& volume) {
   return volume.values.size() * sizeof(float) + volume.mask.size();
 }
+std::size_t linesBytes(const core::Polylines& lines) { return lines.byteSize(); }
 
 }  // namespace tfd::nodes::detail

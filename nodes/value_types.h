@@ -8,6 +8,7 @@
 #include "core/tensor_field.h"
 #include "core/tet_mesh.h"
 #include "core/topology/degenerate_curves.h"
+#include "core/trace/polylines.h"
 #include "graph/value.h"
 
 namespace tfd::nodes::detail {
@@ -18,6 +19,7 @@ std::size_t curvesBytes(const core::DegenerateCurves& curves);
 std::size_t surfaceMeshBytes(const core::SurfaceMesh& mesh);
 std::size_t instancePointsBytes(const core::InstancePoints& points);
 std::size_t volumeBytes(const core::ScalarVolume& volume);
+std::size_t linesBytes(const core::Polylines& lines);
 }  // namespace tfd::nodes::detail
 
 TFD_GRAPH_VALUE_TYPE_SIZED(tfd::core::TetMesh, "TetMesh", tfd::nodes::detail::meshBytes);
@@ -30,3 +32,4 @@ TFD_GRAPH_VALUE_TYPE_SIZED(tfd::core::SurfaceMesh, "Mesh", tfd::nodes::detail::s
 TFD_GRAPH_VALUE_TYPE_SIZED(tfd::core::InstancePoints, "Points",
                            tfd::nodes::detail::instancePointsBytes);
 TFD_GRAPH_VALUE_TYPE_SIZED(tfd::core::ScalarVolume, "Volume", tfd::nodes::detail::volumeBytes);
+TFD_GRAPH_VALUE_TYPE_SIZED(tfd::core::Polylines, "Lines", tfd::nodes::detail::linesBytes);

@@ -117,7 +117,7 @@ void setMatrix(GLuint program, const char* name, const Mat4& m) {
 
 struct Renderer::Impl {
   GLuint surface = 0, colour = 0, lines = 0, points = 0;
-  Batch boundary, slice, curves, overlay, pointBatch, markers;
+  Batch boundary, slice, curves, overlay, traced, pointBatch, markers;
   std::array<float, 4> boundaryColour{};
 };
 
@@ -158,6 +158,7 @@ void Renderer::upload(const Scene& s) {
   };
   lines(m.curves, s.curves);
   lines(m.overlay, s.overlay);
+  lines(m.traced, s.lines);
   auto points = [](Batch& b, const PointSet& p) {
     b.fill(p.positions, p.colours.data(), p.colours.size() * sizeof(Rgba), true, nullptr);
     b.size = p.size;
@@ -191,7 +192,7 @@ void Renderer::draw(const Camera& camera, int width, int height, const DrawOptio
   glUseProgram(m.lines);
   setMatrix(m.lines, "mvp", mvp);
   glUniform2f(glGetUniformLocation(m.lines, "viewport"), float(width), float(height));
-  for (const Batch* b : {&m.curves, &m.overlay}) {
+  for (const Batch* b : {&m.curves, &m.overlay, &m.traced}) {
     glUniform1f(glGetUniformLocation(m.lines, "width"), b->size);
     b->draw(GL_LINES);
   }
@@ -226,7 +227,8 @@ void Renderer::draw(const Camera& camera, int width, int height, const DrawOptio
 
 void Renderer::release() {
   Impl& m = *impl_;
-  for (Batch* b : {&m.boundary, &m.slice, &m.curves, &m.overlay, &m.pointBatch, &m.markers})
+  for (Batch* b :
+       {&m.boundary, &m.slice, &m.curves, &m.overlay, &m.traced, &m.pointBatch, &m.markers})
     b->release();
   for (GLuint* p : {&m.surface, &m.colour, &m.lines, &m.points})
     if (*p) {

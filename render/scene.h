@@ -2,7 +2,7 @@
 // What render/ draws, as plain arrays (built on the CPU from core values by scene_builder.h,
 // uploaded by Renderer): a translucent boundary surface, an opaque cutting plane with
 // per-vertex colours, wide lines (degenerate curves, constraint curves and frames, regions)
-// and round points (transition points, design points, picks).
+// thin traced lines (hyperstreamlines) and round points (transition points, design points, picks).
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -43,14 +43,15 @@ struct PointSet {
 struct Scene {
   Surface boundary;
   ColouredTriangles slice;
-  LineSet curves;    ///< degenerate curves (pickable)
-  LineSet overlay;   ///< constraint curves, frames, regions
-  PointSet points;   ///< transition points, design points
-  PointSet markers;  ///< picks and other highlights (drawn on top)
+  LineSet curves;               ///< degenerate curves (pickable)
+  LineSet overlay;              ///< constraint curves, frames, regions
+  LineSet lines{{}, {}, 1.5f};  ///< traced lines (hyperstreamlines), thin
+  PointSet points;              ///< transition points, design points
+  PointSet markers;             ///< picks and other highlights (drawn on top)
   Bounds bounds;
   bool empty() const {
     return boundary.indices.empty() && slice.positions.empty() && curves.positions.empty() &&
-           overlay.positions.empty() && points.positions.empty();
+           overlay.positions.empty() && lines.positions.empty() && points.positions.empty();
   }
 };
 

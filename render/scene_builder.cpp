@@ -1,7 +1,10 @@
 #include "render/scene_builder.h"
 
+#include "render/colormap.h"
+
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <unordered_map>
 
 namespace tfd::render {
@@ -16,7 +19,8 @@ Rgba fig5(core::DegenerateType type, core::DegeneratePattern pattern) {
 }
 
 /// A segment's pattern: its first endpoint's, unless that is a transition point.
-core::DegeneratePattern segmentPattern(const core::DegenerateCurve& c, std::size_t i, std::size_t j) {
+core::DegeneratePattern segmentPattern(const core::DegenerateCurve& c, std::size_t i,
+                                       std::size_t j) {
   if (c.patterns[i] != core::DegeneratePattern::Transition) return c.patterns[i];
   if (c.patterns[j] != core::DegeneratePattern::Transition) return c.patterns[j];
   return core::DegeneratePattern::Wedge;
@@ -89,6 +93,22 @@ void addCurves(Scene& scene, const core::DegenerateCurves& curves) {
   }
 }
 
+void addLines(Scene& scene, const core::Polylines& lines) {
+  const int k = static_cast<int>(lines.family);
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const core::Polyline& l : lines.lines)
+    for (const Vec3& e : l.eigenvalues) lo = std::min(lo, e[k]), hi = std::max(hi, e[k]);
+  const auto colour = [&](const core::Polyline& l, std::size_t i) {
+    const double v = i < l.eigenvalues.size() ? l.eigenvalues[i][k] : lo;
+    return sequential(hi > lo ? 0.15 + 0.85 * (v - lo) / (hi - lo) : 0.8);
+  };
+  for (const core::Polyline& l : lines.lines)
+    for (std::size_t i = 0; i < l.points.size(); ++i) {
+      scene.bounds.extend(l.points[i]);
+      if (i > 0) scene.lines.add(l.points[i - 1], l.points[i], colour(l, i - 1), colour(l, i));
+    }
+}
+
 void addConstraints(Scene& scene, const core::ConstraintSet& set, double frameLength) {
   for (const core::CurveElement& e : set.curves) {
     const std::size_t n = e.samples.size();
@@ -140,6 +160,7 @@ Scene buildScene(const SceneInput& in) {
   Scene scene;
   if (in.mesh) addBoundary(scene, *in.mesh);
   if (in.curves) addCurves(scene, *in.curves);
+  if (in.lines) addLines(scene, *in.lines);
   const double frameLength =
       0.04 * (in.mesh ? (in.mesh->boundsMax() - in.mesh->boundsMin()).norm() : 2.0);
   for (const core::ConstraintSet* set : in.constraints)

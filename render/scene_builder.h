@@ -11,6 +11,7 @@
 #include "core/tensor_field.h"
 #include "core/tet_mesh.h"
 #include "core/topology/degenerate_curves.h"
+#include "core/trace/polylines.h"
 #include "render/scene.h"
 
 namespace tfd::render {
@@ -31,6 +32,7 @@ struct SceneInput {
   const core::TetMesh* mesh = nullptr;
   const core::TensorField* field = nullptr;
   const core::DegenerateCurves* curves = nullptr;
+  const core::Polylines* lines = nullptr;
   std::vector<const core::ConstraintSet*> constraints;
   std::optional<SliceSettings> slice;  ///< needs a field
 };
@@ -44,6 +46,9 @@ void addCurves(Scene& scene, const core::DegenerateCurves& curves);
 /// Curve elements as polylines through their samples with short frame axes (in shades of
 /// magenta: light u, violet v, white-pink tangent); point elements as points with their frames.
 /// `frameLength` in world units.
+/// Traced lines, thin, coloured by the eigenvalue of the field they follow (sequential map
+/// from its smallest to its largest value over all lines).
+void addLines(Scene& scene, const core::Polylines& lines);
 void addConstraints(Scene& scene, const core::ConstraintSet& set, double frameLength);
 void addSlice(Scene& scene, const core::TensorField& field, const SliceSettings& slice);
 void addSphereOutline(Scene& scene, const Vec3& center, double radius, Rgba colour);

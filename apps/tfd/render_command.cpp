@@ -99,13 +99,14 @@ int runRender(const RenderArgs& args, const Context& context) {
   const nodes::DisplayValues values = nodes::displayValues(*graph, result, node);
   if (values.empty()) {
     printError("node \"" + node + "\" (" + graph->node(node).type().name() +
-               ") has nothing to draw (no mesh, field, curves or design elements)");
+               ") has nothing to draw (no mesh, field, curves, lines or design elements)");
     return kNodeFailed;
   }
   render::SceneInput in;
   in.mesh = values.mesh.get();
   in.field = values.field.get();
   in.curves = values.curves.get();
+  in.lines = values.lines.get();
   for (const auto& c : values.constraints) in.constraints.push_back(c.get());
   if (slice && !values.field) {
     printError("--slice: node \"" + node + "\" shows no tensor field to cut");
