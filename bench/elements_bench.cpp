@@ -28,7 +28,7 @@ const core::TensorField& ballField() {
 // Size chosen so the ball fills with about 10,000 elements (no element limit reached).
 core::ElementSynthesisOptions options() {
   core::ElementSynthesisOptions o;
-  o.size = 0.082;
+  o.size = 0.064;
   o.maxElements = 1'000'000;
   return o;
 }

@@ -11,8 +11,8 @@ namespace {
 
 using std::numbers::pi;
 
-/// Closes a ring of `n` vertices starting at `first` with a fan around vertex `centre`;
-/// `outward` picks the winding (counter-clockwise seen from the side the fan faces).
+/// Closes a ring of `n` vertices starting at `first` with a fan around vertex `centre`, wound
+/// like the ring, or against it with `reverse`.
 void fan(SurfaceMesh& m, int centre, int first, int n, bool reverse) {
   for (int i = 0; i < n; ++i) {
     const int a = first + i, b = first + (i + 1) % n;

@@ -41,8 +41,7 @@ struct Sample {
   OrientedBox box;
 };
 
-/// Uniform grid of sample ids; cells at least as large as any conflict or collision distance,
-/// so the 27 cells around a point hold every sample that can reject it.
+/// Uniform grid of sample ids, searched in a cube around a point.
 class SampleGrid {
  public:
   SampleGrid(const Vec3& lo, const Vec3& hi, double cell) : origin_(lo), cell_(cell) {
@@ -53,12 +52,14 @@ class SampleGrid {
     cells_.resize(std::size_t(dims_[0]) * dims_[1] * dims_[2]);
   }
   void add(const Vec3& p, int id) { cells_[index(coord(p))].push_back(id); }
+  /// Calls hit(id) for the samples in the cells meeting the cube of half-side `radius`
+  /// around p, until it returns true.
   template <class F>
-  bool anyNear(const Vec3& p, F&& hit) const {
-    const auto c = coord(p);
-    for (int k = std::max(0, c[2] - 1); k <= std::min(dims_[2] - 1, c[2] + 1); ++k)
-      for (int j = std::max(0, c[1] - 1); j <= std::min(dims_[1] - 1, c[1] + 1); ++j)
-        for (int i = std::max(0, c[0] - 1); i <= std::min(dims_[0] - 1, c[0] + 1); ++i)
+  bool anyNear(const Vec3& p, double radius, F&& hit) const {
+    const auto lo = coord(p - Vec3::Constant(radius)), hi = coord(p + Vec3::Constant(radius));
+    for (int k = lo[2]; k <= hi[2]; ++k)
+      for (int j = lo[1]; j <= hi[1]; ++j)
+        for (int i = lo[0]; i <= hi[0]; ++i)
           for (int id : cells_[index({i, j, k})])
             if (hit(id)) return true;
     return false;
@@ -90,7 +91,7 @@ class Sampler {
         size_(size),
         random_(o.seed),
         metric_(size / o.density, o.anisotropy, referenceNorm(field)),
-        grid_(field.mesh().boundsMin(), field.mesh().boundsMax(), cellSize(field)) {
+        grid_(field.mesh().boundsMin(), field.mesh().boundsMax(), cellSize()) {
     const auto& volumes = field.mesh().tetVolumes();
     cumulative_.resize(volumes.size());
     double sum = 0;
@@ -105,15 +106,12 @@ class Sampler {
     for (const Tensor& t : field.values()) sum += t.deviator().norm() * t.deviator().norm();
     return std::sqrt(sum / double(std::max<std::size_t>(1, field.values().size())));
   }
-  double cellSize(const TensorField& field) const {
-    // λ_max is convex, so no interpolated deviator has a larger major eigenvalue than a vertex.
-    double maxMajor = 0;
-    for (const Tensor& t : field.values())
-      maxMajor = std::max(maxMajor, eigenDecompose(t.deviator()).values[0]);
+  double cellSize() const { return std::max({metric_.spacing(), 2 * maxElementRadius(), 1e-12}); }
+  double maxElementRadius() const {
     double radius = 0;
     for (ElementKind k : {ElementKind::Line, ElementKind::Box})
       radius = std::max(radius, size_ * shapes_.of(k).half.norm());
-    return std::max({metric_.maxSpacing(maxMajor), 2 * radius, 1e-12});
+    return radius;
   }
   std::optional<Sample> evaluate(const Vec3& p) const;
   Vec3 randomPointInVolume();
@@ -177,14 +175,17 @@ Vec3 Sampler::randomAround(const Sample& s) {
 }
 
 bool Sampler::tryAccept(Sample q, ElementPlacement& out) {
-  const bool conflict = grid_.anyNear(q.position, [&](int id) {
+  // M̄ ⪰ M(q)/2, so a conflicting sample lies within √2 h_max(q) of q.
+  const double conflictRadius = std::sqrt(2.0) * q.spacing.maxCoeff();
+  const bool conflict = grid_.anyNear(q.position, conflictRadius, [&](int id) {
     const Sample& p = samples_[id];
     const Vec3 d = q.position - p.position;
     return d.dot(0.5 * (p.metric + q.metric) * d) < 1;
   });
   if (conflict) return false;
   if (o_.rejectOverlaps && q.kind) {
-    const bool collides = grid_.anyNear(q.position, [&](int id) {
+    const double reach = q.box.boundingRadius() + maxElementRadius();
+    const bool collides = grid_.anyNear(q.position, reach, [&](int id) {
       const Sample& p = samples_[id];
       return p.kind && boxesOverlap(p.box, q.box);
     });

@@ -32,9 +32,6 @@ class SpacingMetric {
     const Vec3 h = spacings(e.values);
     return e.vectors * h.cwiseInverse().cwiseAbs2().asDiagonal() * e.vectors.transpose();
   }
-  /// The largest spacing any deviator with major eigenvalue ≤ `maxMajor` can give.
-  double maxSpacing(double maxMajor) const { return r_ * std::exp(kappa_ * maxMajor / s_); }
-
   double spacing() const { return r_; }
   double anisotropy() const { return kappa_; }
   double referenceNorm() const { return s_; }

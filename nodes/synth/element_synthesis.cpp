@@ -73,6 +73,8 @@ void cook(graph::CookContext& c) {
   const auto field = c.input<core::TensorField>("field");
   core::ElementPlacement placed = core::placeElements(*field, shapes, o, progressOf(c));
   c.info(placed.report.summary());
+  if (placed.points.points.empty())
+    c.warning("no elements: the field's deviator is zero or neutral at every sample");
   if (placed.report.hitMaxElements)
     c.warning("stopped at max_elements = " + std::to_string(o.maxElements) +
               "; raise it or lower density");

@@ -48,6 +48,11 @@ std::string errorsOf(const graph::NodeReport* r) {
   return out;
 }
 
+TEST(ElementNodes, ExportMeshIsASideEffectNodeAndElementSynthesisIsNot) {
+  EXPECT_TRUE(registry().get("ExportMesh").decl().hasSideEffects());
+  EXPECT_FALSE(registry().get("ElementSynthesis").decl().hasSideEffects());
+}
+
 TEST(ElementNodes, SticksAndLeavesExportedAsMeshAndPoints) {
   test::TempDir dir("element-nodes");
   const std::string text = graphText(
