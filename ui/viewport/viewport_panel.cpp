@@ -85,9 +85,14 @@ ViewportPanel::ViewportPanel(GraphDocument& document, CookController& cook, QWid
     if (!cancelled) rebuildBase();
   });
   connect(&document_, &GraphDocument::changed, this, [this](int flags) {
-    if (flags & kDocumentReplaced) framedOnce_ = false;
-    if (flags & (kUiChanged | kStructureChanged | kDocumentReplaced)) {
-      if (nodes::displayNodeName(document_.graph()) != shown_) rebuildBase();
+    if (flags & kDocumentReplaced) {  // nothing of the previous file stays on screen
+      base_ = {};
+      shown_.clear();
+      framedOnce_ = false;
+    } else if (flags & (kUiChanged | kStructureChanged)) {
+      // Another display node: drawn at once when the last cook has it, else after the next.
+      const std::string node = nodes::displayNodeName(document_.graph());
+      if (node != shown_ && cook_.lastGraph().findNode(node)) rebuildBase();
     }
     if (!document_.graph().findNode(selected_)) selected_.clear();
     rebuildOverlay();
