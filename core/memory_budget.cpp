@@ -102,4 +102,46 @@ std::uint64_t parseByteSize(const std::string& text) {
   return std::uint64_t(bytes);
 }
 
+namespace {
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kAddressSanitizer = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kAddressSanitizer = true;
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
+
+/// Bytes of address space mapped now (/proc/self/statm, first field); 0 when unknown.
+std::uint64_t mappedBytes() {
+  std::ifstream in("/proc/self/statm");
+  std::uint64_t pages = 0;
+  if (!(in >> pages)) return 0;
+  return pages * std::uint64_t(::sysconf(_SC_PAGE_SIZE));
+}
+}  // namespace
+
+AddressSpaceCap::AddressSpaceCap() {
+  if (kAddressSanitizer) return;
+  rlimit limit{};
+  const std::uint64_t mapped = mappedBytes();
+  if (mapped == 0 || ::getrlimit(RLIMIT_AS, &limit) != 0) return;
+  const std::uint64_t cap = mapped + memoryBudget();
+  if (limit.rlim_cur != RLIM_INFINITY && limit.rlim_cur <= cap) return;
+  previous_ = limit.rlim_cur;
+  limit.rlim_cur = cap;
+  active_ = ::setrlimit(RLIMIT_AS, &limit) == 0;
+}
+
+AddressSpaceCap::~AddressSpaceCap() {
+  if (!active_) return;
+  rlimit limit{};
+  if (::getrlimit(RLIMIT_AS, &limit) != 0) return;
+  limit.rlim_cur = previous_;
+  ::setrlimit(RLIMIT_AS, &limit);
+}
+
 }  // namespace tfd::core

@@ -29,4 +29,23 @@ std::string formatBytes(double bytes);
 /// core::Error for anything else or a value below 1 MB.
 std::uint64_t parseByteSize(const std::string& text);
 
+/// For one-shot readers of untrusted files (`tfd info`): caps the process's address space
+/// (RLIMIT_AS, as `ulimit -v`) at what it maps now plus memoryBudget(), for this object's
+/// lifetime, so that an allocation a damaged file makes a library attempt (OpenVDB, OpenEXR)
+/// fails with std::bad_alloc instead of growing until the kernel kills the process. Does
+/// nothing under AddressSanitizer (it reserves its shadow memory up front) or when a lower
+/// limit is already set. Not for cooks: their threads share the one limit.
+class AddressSpaceCap {
+ public:
+  AddressSpaceCap();
+  ~AddressSpaceCap();
+  AddressSpaceCap(const AddressSpaceCap&) = delete;
+  AddressSpaceCap& operator=(const AddressSpaceCap&) = delete;
+  bool active() const { return active_; }
+
+ private:
+  bool active_ = false;
+  std::uint64_t previous_ = 0;
+};
+
 }  // namespace tfd::core

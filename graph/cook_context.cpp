@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "graph/paths.h"
+
 namespace tfd::graph {
 
 namespace {
@@ -34,7 +36,10 @@ int CookContext::paramIndexOf(std::string_view name) const { return decl_.paramI
 std::filesystem::path CookContext::path(std::string_view name) const {
   const ParamDecl& d = paramDecl(name);
   if (d.kind != ParamKind::String) throw NodeError("parameter '" + d.name + "' is not a path");
-  return std::filesystem::path(std::get<std::string>(params_[paramIndexOf(name)]));
+  const std::string& value = std::get<std::string>(params_[paramIndexOf(name)]);
+  if (const std::string problem = outputExtensionProblem(d, value); !problem.empty())
+    throw paramError(name, problem);
+  return std::filesystem::path(value);
 }
 
 NodeError CookContext::paramError(std::string_view name, std::string_view message) const {

@@ -1,5 +1,7 @@
 #include "graph/errors.h"
 
+#include "graph/json_text.h"
+
 namespace tfd::graph {
 
 namespace {
@@ -11,10 +13,12 @@ std::string composeLoadMessage(const std::string& file, const std::string& point
 }
 }  // namespace
 
+// Names, keys and strings from the file reach messages: control bytes are escaped here, once,
+// so a damaged or hostile file never writes raw bytes to a terminal.
 LoadError::LoadError(std::string file, std::string pointer, std::string message)
-    : GraphError(composeLoadMessage(file, pointer, message)),
+    : GraphError(composeLoadMessage(file, printableText(pointer), printableText(message))),
       file_(std::move(file)),
-      pointer_(std::move(pointer)),
-      message_(std::move(message)) {}
+      pointer_(printableText(pointer)),
+      message_(printableText(message)) {}
 
 }  // namespace tfd::graph

@@ -1,5 +1,9 @@
 #include "graph/paths.h"
 
+#include <algorithm>
+#include <cctype>
+#include <sstream>
+
 namespace tfd::graph {
 
 namespace fs = std::filesystem;
@@ -23,6 +27,29 @@ std::string resolvePath(const ParamDecl& decl, const std::string& value, const P
   if (p.is_absolute()) return p.lexically_normal().string();
   const fs::path& base = decl.isOutputFile() ? ctx.outDir : ctx.baseDir;
   return (base / p).lexically_normal().string();
+}
+
+std::string outputExtensionProblem(const ParamDecl& decl, const std::string& value) {
+  if (!decl.isOutputFile() || value.empty()) return {};
+  auto lower = [](std::string text) {
+    for (char& c : text) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return text;
+  };
+  const std::string name = lower(fs::path(value).filename().string());
+  std::istringstream patterns(decl.fileFilter);
+  std::vector<std::string> extensions;
+  for (std::string pattern; patterns >> pattern;) {
+    if (!pattern.starts_with("*.")) return {};  // not a plain extension list: no check
+    const std::string ext = lower(pattern.substr(1));
+    if (name.size() > ext.size() && name.ends_with(ext)) return {};
+    extensions.push_back(pattern.substr(1));
+  }
+  if (extensions.empty()) return {};
+  std::string list;
+  for (std::size_t i = 0; i < extensions.size(); ++i)
+    list += (i == 0 ? "" : i + 1 == extensions.size() ? " or " : ", ") + extensions[i];
+  return "'" + fs::path(value).filename().string() + "' does not end in " + list +
+         ", the kind of file this node writes";
 }
 
 std::vector<ParamValue> resolvedParams(const Node& node, const PathContext& ctx) {

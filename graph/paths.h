@@ -23,6 +23,12 @@ PathContext makePathContext(const Graph& graph, const std::filesystem::path& out
 /// The resolved path of a file parameter's value; other values unchanged. Empty stays empty.
 std::string resolvePath(const ParamDecl& decl, const std::string& value, const PathContext& ctx);
 
+/// For an output-file parameter whose declaration lists extensions (`outputFile("*.vtu")`):
+/// empty when `value` ends in one of them (case-insensitively) or is empty, otherwise why not,
+/// e.g. "'x.vdb' does not end in .vtu, the kind of file this node writes". Writers choose
+/// their format by node type, so a mismatched name would hide what the file holds.
+std::string outputExtensionProblem(const ParamDecl& decl, const std::string& value);
+
 /// The node's effective parameter values in declaration order, file paths resolved.
 std::vector<ParamValue> resolvedParams(const Node& node, const PathContext& ctx);
 

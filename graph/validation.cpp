@@ -16,6 +16,14 @@ std::vector<Issue> validateGraph(const Graph& graph, const PathContext& paths) {
                           "required input '" + in.name + "' is not connected"});
     const auto& decls = node.decl().params();
     for (std::size_t i = 0; i < decls.size(); ++i) {
+      if (decls[i].isOutputFile()) {
+        const std::string problem =
+            outputExtensionProblem(decls[i], std::get<std::string>(node.paramAt(i)));
+        if (!problem.empty())
+          issues.push_back({Severity::Error, node.name(),
+                            pointerJoin(where + "/params", decls[i].name),
+                            "parameter '" + decls[i].name + "': " + problem});
+      }
       if (!decls[i].isInputFile()) continue;
       const std::string& value = std::get<std::string>(node.paramAt(i));
       if (value.empty()) continue;

@@ -33,6 +33,9 @@ std::optional<graph::Graph> loadGraphWithOverrides(const std::filesystem::path& 
                                                    const graph::NodeRegistry& registry,
                                                    const std::vector<std::string>& sets);
 
+/// Adds `--max-memory SIZE` (core::setMemoryBudget) to a subcommand that reads or computes.
+void addMaxMemoryOption(CLI::App& cmd);
+
 // Subcommands: each adds itself to the app and runs from the callback it registers, storing
 // its exit code in `exitCode`.
 void addCookCommand(CLI::App& app, const Context& context, int& exitCode);

@@ -99,6 +99,7 @@ void addCookCommand(CLI::App& app, const Context& context, int& exitCode) {
                 "After cooking, print 'profile <node> <type> <seconds>' per cooked node.");
   cmd->add_flag("--files", args->files,
                 "After cooking, print 'file <node> <path>' per file the cook wrote.");
+  addMaxMemoryOption(*cmd);
   cmd->add_flag("--strict", args->strict, "Treat warnings as errors (exit 1).");
   cmd->add_flag("-q,--quiet", args->quiet,
                 "Print nothing but errors (and --profile, --files lines).");

@@ -2,11 +2,10 @@
 // degenerate-curve JSON. Each prints label/value rows (formatRows).
 #include "apps/tfd/describe_io_files.h"
 
-#include <fstream>
 #include <iomanip>
-#include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "io/curves/curve_json_reader.h"
 #include "io/volume/exr_reader.h"
 #include "io/volume/vdb_reader.h"
 
@@ -85,26 +84,16 @@ int describeExr(const std::filesystem::path& file, std::ostream& out) {
 }
 
 int describeCurvesJson(const std::filesystem::path& file, std::ostream& out) {
-  std::ifstream in(file);
-  if (!in) throw std::runtime_error(file.string() + ": cannot read");
-  nlohmann::json doc;
-  try {
-    doc = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::exception& e) {
-    throw std::runtime_error(file.string() + ": invalid JSON: " + e.what());
-  }
-  if (!doc.is_object() || doc.value("format", "") != "tfd-degenerate-curves")
-    throw std::runtime_error(file.string() +
-                             ": not a tfd-degenerate-curves file (its \"format\" differs)");
+  const io::CurveFile curves = io::readCurvesJson(file);
   int linear = 0, planar = 0, loops = 0, points = 0, transitions = 0;
-  for (const auto& c : doc.at("curves")) {
-    (c.at("type") == "linear" ? linear : planar) += 1;
-    loops += c.at("closed").get<bool>();
-    points += static_cast<int>(c.at("points").size());
-    for (const auto& p : c.at("pattern")) transitions += p == "transition";
+  for (const io::CurveFileEntry& c : curves.curves) {
+    (c.type == core::DegenerateType::Linear ? linear : planar) += 1;
+    loops += c.closed;
+    points += static_cast<int>(c.points.size());
+    for (auto p : c.patterns) transitions += p == core::DegeneratePattern::Transition;
   }
   out << formatRows(
-      {{"format", "tfd degenerate curves, version " + doc.at("formatVersion").dump()},
+      {{"format", "tfd degenerate curves, version " + std::to_string(curves.formatVersion)},
        {"curves", std::to_string(linear + planar) + " (" + std::to_string(linear) + " linear, " +
                       std::to_string(planar) + " planar; " + std::to_string(loops) + " loops)"},
        {"points",

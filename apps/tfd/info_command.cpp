@@ -1,9 +1,11 @@
 // tfd info FILE: a summary of a graph file or of any file kind registered in
 // register_describers.cpp.
 #include <iostream>
+#include <new>
 
 #include "apps/tfd/cli.h"
 #include "apps/tfd/file_describers.h"
+#include "core/memory_budget.h"
 
 namespace tfd::cli {
 
@@ -23,7 +25,12 @@ int runInfo(const std::string& file, const Context& context) {
     return kUsage;
   }
   try {
+    // A damaged file can make a library allocate without bound: cap the address space.
+    const core::AddressSpaceCap cap;
     return (*describe)(file, std::cout);
+  } catch (const std::bad_alloc&) {
+    printError(file + ": reading it needs more memory than the budget allows (a damaged file?)");
+    return kUsage;
   } catch (const std::exception& e) {
     printError(file + ": " + e.what());
     return kUsage;
@@ -36,6 +43,7 @@ void addInfoCommand(CLI::App& app, const Context& context, int& exitCode) {
   auto file = std::make_shared<std::string>();
   CLI::App* cmd = app.add_subcommand("info", "Describe a file (graph, mesh, field export...).");
   cmd->add_option("file", *file, "The file.")->required();
+  addMaxMemoryOption(*cmd);
   cmd->callback([file, &context, &exitCode] { exitCode = runInfo(*file, context); });
 }
 

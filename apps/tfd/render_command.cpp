@@ -155,6 +155,7 @@ void addRenderCommand(CLI::App& app, const Context& context, int& exitCode) {
   cmd->add_option("-o,--output", args->out, "The PNG file to write.")
       ->required()
       ->type_name("OUT.png");
+  addMaxMemoryOption(*cmd);
   cmd->add_flag("-q,--quiet", args->quiet, "Print nothing but errors.");
   cmd->callback([args, &context, &exitCode] { exitCode = runRender(*args, context); });
 }

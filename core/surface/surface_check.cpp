@@ -177,7 +177,9 @@ std::vector<std::string> closedSurfaceProblems(const SurfaceMesh& mesh, int maxR
   lo = (mx - mn).maxCoeff();
   if (!(std::abs(volume) > 1e-12 * lo * lo * lo)) {
     std::ostringstream s;
-    s << "the surface encloses no volume (" << volume << ")";
+    s << "the surface encloses no volume: its signed volume, " << volume
+      << ", is negligible for its size (" << lo
+      << " across; flat, or a vertex far from the others?)";
     problems.add("zero volume", [&] { return s.str(); });
   }
   return problems.finish();

@@ -59,7 +59,8 @@ const char* volumeName(long long type) {
 
 class GmshReader {
  public:
-  GmshReader(const std::string& text, const std::string& file) : s_(text, file, 0) {}
+  GmshReader(const std::string& text, const std::string& file)
+      : s_(text, file, 0), size_(static_cast<long long>(text.size())) {}
 
   std::shared_ptr<const core::TetMesh> read() {
     while (s_.nextLine()) {
@@ -152,9 +153,18 @@ class GmshReader {
     return p;
   }
 
+  /// A count read from the file, before anything is reserved for it: each item takes at
+  /// least a byte of the file.
+  void requirePlausibleCount(long long count, const char* what) {
+    if (count < 0 || count > size_)
+      s_.fail("the number of " + std::string(what) + " (" + std::to_string(count) +
+              ") cannot fit in a file of " + std::to_string(size_) + " bytes");
+  }
+
   void readNodes2() {
     nextLine("the number of nodes");
     const long long n = s_.integer("the number of nodes");
+    requirePlausibleCount(n, "nodes");
     positions_.reserve(n);
     for (long long i = 0; i < n; ++i) {
       itemLine(i, n, "nodes");
@@ -170,6 +180,7 @@ class GmshReader {
     nextLine("the $Nodes header");
     const long long blocks = s_.integer("the number of entity blocks");
     const long long total = s_.integer("the number of nodes");
+    requirePlausibleCount(total, "nodes");
     positions_.reserve(total);
     long long seen = 0;
     for (long long b = 0; b < blocks; ++b) {
@@ -277,6 +288,7 @@ class GmshReader {
   }
 
   TextScanner s_;
+  long long size_;  // bytes of the file
   double version_ = 0;
   bool v40_ = false;
   bool haveNodes_ = false;

@@ -18,6 +18,8 @@ std::shared_ptr<const core::TetMesh> meshSurface(core::SurfaceMesh surface,
     const core::WeldReport weld = core::weldCoincidentVertices(surface);
     r.weldedVertices = weld.mergedVertices;
     r.droppedTriangles = weld.droppedTriangles;
+    // Before anything uses its volume: an open or flat surface is named as such.
+    requireClosedSurface(surface, request.source.empty() ? "the surface" : request.source);
   }
   TetgenOptions o;
   o.targetTets = request.targetTets;

@@ -92,6 +92,15 @@ std::string tetgenSwitches(double surfaceVolume, const TetgenOptions& o) {
   return s.str();
 }
 
+void requireClosedSurface(const core::SurfaceMesh& surface, const std::string& source) {
+  if (const auto problems = core::closedSurfaceProblems(surface); !problems.empty()) {
+    std::string message =
+        source + " is not a closed, manifold, consistently oriented surface (TetGen needs one): ";
+    for (std::size_t i = 0; i < problems.size(); ++i) message += (i ? "; " : "") + problems[i];
+    throw core::Error(message);
+  }
+}
+
 std::shared_ptr<const core::TetMesh> tetrahedralize(const core::SurfaceMesh& input,
                                                     const TetgenOptions& options,
                                                     const core::Progress& progress) {
@@ -107,12 +116,7 @@ std::shared_ptr<const core::TetMesh> tetrahedralize(const core::SurfaceMesh& inp
   progress.report(0, "checking the surface");
 
   core::SurfaceMesh surface = input;
-  if (const auto problems = core::closedSurfaceProblems(surface); !problems.empty()) {
-    std::string message =
-        source + " is not a closed, manifold, consistently oriented surface (TetGen needs one): ";
-    for (std::size_t i = 0; i < problems.size(); ++i) message += (i ? "; " : "") + problems[i];
-    throw core::Error(message);
-  }
+  requireClosedSurface(surface, source);
   core::removeUnreferencedVertices(surface);
   checkCoincidentVertices(surface, source);
   const double volume = core::enclosedVolume(surface);

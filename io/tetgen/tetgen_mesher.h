@@ -52,6 +52,10 @@ double tetgenMemoryEstimate(double tets, std::size_t surfaceVertices);
 /// (`p`), zero-based numbering (`z`) and quiet (`Q`), e.g. "pzQYq1.414a0.000012".
 std::string tetgenSwitches(double surfaceVolume, const TetgenOptions& options);
 
+/// Throws core::Error "<source> is not a closed, manifold, consistently oriented surface
+/// (TetGen needs one): <problems>" unless `surface` is one that encloses a volume.
+void requireClosedSurface(const core::SurfaceMesh& surface, const std::string& source);
+
 /// Tetrahedralises the solid bounded by `surface`.
 /// Messages start with options.source (or "the surface"). The surface is checked first: it must be
 /// closed, manifold and consistently oriented (either orientation), without coincident vertices,

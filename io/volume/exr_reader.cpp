@@ -13,9 +13,13 @@
 #include <OpenEXR/ImfStringAttribute.h>
 #include <OpenEXR/ImfVecAttribute.h>
 
+#include <cstdint>
 #include <exception>
+#include <new>
 
 #include "core/error.h"
+#include "core/memory_budget.h"
+#include "io/text_scanner.h"
 
 namespace tfd::io {
 
@@ -87,8 +91,21 @@ ExrImage readExrImage(const std::filesystem::path& path) {
     const Imath::Box2i dw = header.dataWindow();
     image.dataMin = {dw.min.x, dw.min.y};
     image.dataMax = {dw.max.x, dw.max.y};
-    image.width = dw.max.x - dw.min.x + 1;
-    image.height = dw.max.y - dw.min.y + 1;
+    // In 64 bits: a damaged header can announce any window.
+    const std::int64_t width = std::int64_t(dw.max.x) - dw.min.x + 1;
+    const std::int64_t height = std::int64_t(dw.max.y) - dw.min.y + 1;
+    if (width <= 0 || height <= 0 || width > (1 << 30) || height > (1 << 30))
+      throw core::Error("EXR file '" + path.string() + "': its data window (" +
+                        std::to_string(width) + " x " + std::to_string(height) +
+                        " pixels) is empty or out of range (a damaged file?)");
+    double channels = 0;
+    for (auto it = header.channels().begin(); it != header.channels().end(); ++it) channels += 1;
+    core::checkMemory(double(width) * double(height) * channels * sizeof(float),
+                      "EXR file '" + path.string() + "' (its data window of " +
+                          std::to_string(width) + " x " + std::to_string(height) + " pixels, " +
+                          std::to_string(int(channels)) + " channels, as the file announces)");
+    image.width = int(width);
+    image.height = int(height);
     for (auto it = header.begin(); it != header.end(); ++it) {
       if (std::string(it.name()) == "channels") continue;
       image.attributes[it.name()] = describe(it.attribute());
@@ -108,8 +125,13 @@ ExrImage readExrImage(const std::filesystem::path& path) {
     }
     file.setFrameBuffer(frameBuffer);
     file.readPixels(dw.min.y, dw.max.y);
+  } catch (const core::Error&) {
+    throw;
+  } catch (const std::bad_alloc&) {
+    throw core::Error("cannot read EXR file '" + path.string() +
+                      "': it asks for more memory than can be allocated (a damaged file?)");
   } catch (const std::exception& e) {
-    throw core::Error("cannot read EXR file '" + path.string() + "': " + e.what());
+    throw core::Error("cannot read EXR file '" + path.string() + "': " + printableText(e.what()));
   }
   return image;
 }

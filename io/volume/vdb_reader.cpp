@@ -2,7 +2,11 @@
 
 #include <openvdb/openvdb.h>
 
+#include <new>
+
 #include "core/error.h"
+#include "core/memory_budget.h"
+#include "io/text_scanner.h"
 #include "io/volume/vdb_support.h"
 
 namespace tfd::io {
@@ -51,6 +55,34 @@ bool loadValues(const openvdb::GridBase& base, VdbGridData& out) {
   return true;
 }
 
+/// What the file says a grid takes in memory (OpenVDB's "file_mem_bytes" statistics, written
+/// with every grid), checked against the memory budget before any tree is read; with values,
+/// also the list of active voxels ("file_voxel_count").
+void checkAnnouncedSizes(openvdb::io::File& file, const std::string& name, bool withValues) {
+  const openvdb::GridPtrVecPtr grids = file.readAllGridMetadata();
+  for (const auto& grid : *grids) {
+    const std::string what =
+        "VDB file '" + name + "': grid '" + printableText(grid->getName()) + "'";
+    if (const auto bytes = grid->getMetadata<openvdb::Int64Metadata>("file_mem_bytes"))
+      core::checkMemory(double(bytes->value()), what + " (as the file announces)");
+    const auto voxels = grid->getMetadata<openvdb::Int64Metadata>("file_voxel_count");
+    if (withValues && voxels)
+      core::checkMemory(double(voxels->value()) * sizeof(VdbGridData::Voxel),
+                        what + "'s list of " + std::to_string(voxels->value()) +
+                            " active voxels (as the file announces)");
+  }
+}
+
+/// An OpenVDB exception's text without its class prefix ("KeyError: ..."), printable.
+std::string openVdbReason(const openvdb::Exception& e) {
+  std::string text = e.what();
+  if (const auto colon = text.find(": ");
+      colon != std::string::npos && colon < 24 && text.compare(colon - 5, 5, "Error") == 0)
+    text = text.substr(colon + 2);
+  if (text.empty()) text = "no reason given";
+  return "the file is damaged or not an OpenVDB file (OpenVDB: " + printableText(text) + ")";
+}
+
 }  // namespace
 
 VdbFileData readVdbFile(const std::filesystem::path& path, bool withValues) {
@@ -60,12 +92,16 @@ VdbFileData readVdbFile(const std::filesystem::path& path, bool withValues) {
     openvdb::io::File file(path.string());
     file.open(false);  // read everything now; the file is closed at the end of this scope
     data.fileMetadata = metadataText(*file.getMetadata());
+    checkAnnouncedSizes(file, path.string(), withValues);
     const openvdb::GridPtrVecPtr grids = file.getGrids();
     file.close();
     for (const auto& grid : *grids) {
       VdbGridData g;
       g.name = grid->getName();
       g.valueType = grid->valueType();
+      if (g.valueType.empty())
+        throw core::Error("cannot read VDB file '" + path.string() + "': grid '" +
+                          printableText(g.name) + "' has no value type (the file is damaged)");
       g.gridClass = openvdb::GridBase::gridClassToString(grid->getGridClass());
       g.vectorType = openvdb::GridBase::vecTypeToString(grid->getVectorType());
       g.saveFloatAsHalf = grid->saveFloatAsHalf();
@@ -89,8 +125,16 @@ VdbFileData readVdbFile(const std::filesystem::path& path, bool withValues) {
       }
       data.grids.push_back(std::move(g));
     }
+  } catch (const core::Error&) {
+    throw;
   } catch (const openvdb::Exception& e) {
-    throw core::Error("cannot read VDB file '" + path.string() + "': " + e.what());
+    throw core::Error("cannot read VDB file '" + path.string() + "': " + openVdbReason(e));
+  } catch (const std::bad_alloc&) {
+    throw core::Error("cannot read VDB file '" + path.string() +
+                      "': it asks for more memory than can be allocated (a damaged file?)");
+  } catch (const std::exception& e) {
+    throw core::Error("cannot read VDB file '" + path.string() + "': the file is damaged (" +
+                      printableText(e.what()) + ")");
   }
   return data;
 }

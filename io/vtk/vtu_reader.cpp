@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/memory_budget.h"
 #include "io/base64.h"
 #include "io/binary_io.h"
 #include "io/file_bytes.h"
@@ -300,6 +301,16 @@ class VtuReader {
         if (compressed > data_.size() || expected > (std::uint64_t(1) << 34)) {
           fail(a, "implausible compressed block size");
         }
+        // zlib expands at most about 1032:1: a larger announced size is damage, refused before
+        // anything is allocated for it.
+        if (expected > compressed * 1032 + 64) {
+          fail(a, "compressed block " + std::to_string(b) + " announces " +
+                      std::to_string(expected) + " bytes from " + std::to_string(compressed) +
+                      ", more than zlib can expand");
+        }
+        core::checkMemory(double(bytes.size()) + double(expected),
+                          "file '" + file_ + "', line " + std::to_string(a.line) +
+                              ": a compressed DataArray (as the file announces)");
         const std::string in = take(a, decoder, source, pos, raw, compressed);
         std::string block(expected, '\0');
         uLongf length = uLongf(expected);

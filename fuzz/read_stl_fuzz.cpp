@@ -1,0 +1,10 @@
+// libFuzzer target: the STL surface reader (io/mesh/surface_readers.h) on any bytes.
+#include "fuzz/fuzz_support.h"
+#include "io/mesh/surface_readers.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  using namespace tfd;
+  const auto file = fuzz::inputFile(data, size, "input.stl");
+  fuzz::expectReadOrError(file, [&] { fuzz::checkSurface(io::readStl(file)); });
+  return 0;
+}
