@@ -27,6 +27,28 @@ namespace {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
+/// True once `parent` has a child process (TetGen runs in one), polling /proc for up to
+/// `limit`. A fixed sleep instead raced the start-up of `tfd` on a loaded machine.
+bool waitForChild(pid_t parent, std::chrono::milliseconds limit) {
+  const auto deadline = Clock::now() + limit;
+  while (Clock::now() < deadline) {
+    for (const auto& e : fs::directory_iterator("/proc")) {
+      std::ifstream stat(e.path() / "stat");
+      std::string line;
+      if (!std::getline(stat, line)) continue;
+      // pid (comm) state ppid ...: comm may hold spaces, so read after the last ')'.
+      const auto close = line.rfind(')');
+      if (close == std::string::npos) continue;
+      std::istringstream rest(line.substr(close + 1));
+      std::string state;
+      long ppid = 0;
+      if (rest >> state >> ppid && ppid == parent) return true;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return false;
+}
+
 std::string slurp(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
   std::stringstream s;
@@ -72,7 +94,8 @@ class StopSignals : public ::testing::Test {
     EXPECT_EQ(posix_spawn(&pid, TFD_CLI_PATH, &files, nullptr, const_cast<char**>(argv), environ),
               0);
     posix_spawn_file_actions_destroy(&files);
-    std::this_thread::sleep_for(std::chrono::milliseconds(600));  // TetGen is running now
+    EXPECT_TRUE(waitForChild(pid, std::chrono::seconds(30))) << "TetGen's child never started";
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));  // and is inside TetGen
     const auto start = Clock::now();
     for (int s : signals) {
       ::kill(pid, s);
