@@ -109,6 +109,18 @@ std::shared_ptr<const TetMesh> carvedSolid(int n, const Vec3& lo, const Vec3& hi
   return std::make_shared<const TetMesh>(std::move(positions), std::move(tets));
 }
 
+std::shared_ptr<const TetMesh> coneMesh(const core::SurfaceMesh& surface, const Vec3& apex) {
+  std::vector<Vec3> positions = surface.positions;
+  const int centre = static_cast<int>(positions.size());
+  positions.push_back(apex);
+  std::vector<TetMesh::Tet> tets;
+  tets.reserve(surface.triangles.size());
+  // Counter-clockwise seen from outside: (apex, a, b, c) is positively oriented.
+  for (const auto& t : surface.triangles) tets.push_back({centre, t[0], t[1], t[2]});
+  orient(positions, tets);
+  return std::make_shared<const TetMesh>(std::move(positions), std::move(tets));
+}
+
 bool insideTorus(const Vec3& p, double major, double minor) {
   const double d = std::hypot(p.x(), p.y()) - major;
   return d * d + p.z() * p.z() < minor * minor;

@@ -5,6 +5,7 @@
 #include <functional>
 #include <memory>
 
+#include "core/surface/surface_mesh.h"
 #include "core/tet_mesh.h"
 
 namespace tfd::test {
@@ -28,6 +29,12 @@ std::shared_ptr<const core::TetMesh> mappedTorus(int nAround, int n, double majo
 std::shared_ptr<const core::TetMesh> carvedSolid(
     int n, const core::Vec3& lo, const core::Vec3& hi,
     const std::function<bool(const core::Vec3&)>& inside, double jitter = 0.0);
+
+/// Tets joining every triangle of a closed, outward-oriented surface that is star-shaped about
+/// `apex` to the apex: a valid tet mesh whose boundary is exactly that surface (e.g. the
+/// procedural sphere TetMesh keeps as its boundary), without TetGen.
+std::shared_ptr<const core::TetMesh> coneMesh(const core::SurfaceMesh& surface,
+                                              const core::Vec3& apex = core::Vec3::Zero());
 
 /// Inside tests for the primitive solids' shapes (centred at the origin, tori in the xy plane):
 /// a torus, and the genus-2 union of two such tori side by side along x at ±(major + minor/2).

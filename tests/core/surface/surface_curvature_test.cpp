@@ -1,6 +1,6 @@
-// Boundary curvature tensor (core/surface/surface_curvature.h, Rusinkiewicz 2004) on structured
-// meshes mapped onto a sphere (umbilic, k = 1/r), a torus (principal directions along and around
-// the tube) and a box (flat faces).
+// Boundary curvature tensor (core/surface/surface_curvature.h, Rusinkiewicz 2004) on meshes
+// without TetGen: the procedural icosphere coned to its centre (umbilic, k = 1/r), a torus
+// mapped from a grid (principal directions along and around the tube) and a box (flat faces).
 #include "core/surface/surface_curvature.h"
 
 #include <gtest/gtest.h>
@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "core/structured_mesh.h"
+#include "core/surface/primitives.h"
 #include "tests/support/solid_meshes.h"
 
 namespace tfd::core {
@@ -15,7 +16,9 @@ namespace {
 
 TEST(SurfaceCurvature, SphereIsUmbilicWithCurvatureOneOverRadius) {
   const double r = 1.5;
-  const auto mesh = test::mappedBall(24, r);
+  // The boundary TetMesh keeps for this primitive at 20000 tets (icosphere), coned to the centre.
+  const auto mesh =
+      test::coneMesh(makePrimitiveForTets(PrimitiveSpec{PrimitiveShape::Sphere, r}, 20000));
   const auto curvature = boundaryCurvatureTensors(*mesh);
   ASSERT_EQ(curvature.size(), mesh->boundaryVertices().size());
   double sumError = 0, worst = 0;
