@@ -58,9 +58,7 @@ class Propagation {
     std::size_t count = 1;
     std::vector<int> deferred;
     while (count < tets_.size()) {
-      while (!queue_.empty()) {
-        const int t = queue_.front();
-        queue_.pop_front();
+      for (int t; (t = next()) >= 0;) {
         if (visited_[t]) continue;
         if (simple(t)) {
           add(t);
@@ -98,6 +96,17 @@ class Propagation {
       u = e - e.dot(n) * n;
     }
     return u.normalized();
+  }
+
+  int next() {
+    for (int b = 2; b >= 0; --b) {
+      if (!queue_[b].empty()) {
+        const int t = queue_[b].front();
+        queue_[b].pop_front();
+        return t;
+      }
+    }
+    return -1;
   }
 
   int shared(int t) const {
@@ -192,7 +201,7 @@ class Propagation {
       out_.maxHolonomyDefect = std::max(out_.maxHolonomyDefect, std::abs(defect));
     }
     for (int nb : r.nb)
-      if (nb >= 0 && !visited_[nb]) queue_.push_back(nb);
+      if (nb >= 0 && !visited_[nb]) queue_[std::min(shared(nb), 3) - 1].push_back(nb);
   }
 
   const TetMesh& mesh_;
@@ -200,7 +209,10 @@ class Propagation {
   const std::vector<Vec3>& n_;
   std::vector<RegionTet> tets_;
   std::vector<char> visited_, hasU_, known_;
-  std::deque<int> queue_;
+  /// Candidates by the number of faces they share with the visited set (when queued): those
+  /// sharing most are taken first, which keeps the front compact (fewer tets that could only
+  /// join by breaking the ball). Entries may be stale; simple() decides on the current state.
+  std::deque<int> queue_[3];
   ReferenceField out_;
 };
 
