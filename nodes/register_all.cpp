@@ -12,6 +12,7 @@ void registerCurveConstraint(graph::NodeRegistry&);
 void registerMergeConstraints(graph::NodeRegistry&);
 void registerPropagate(graph::NodeRegistry&);
 void registerLocalSmooth(graph::NodeRegistry&);
+void registerRemoveCurves(graph::NodeRegistry&);
 void registerExtractDegenerateCurves(graph::NodeRegistry&);
 void registerExportVtu(graph::NodeRegistry&);
 void registerExportVdb(graph::NodeRegistry&);
@@ -26,6 +27,7 @@ void registerAll(graph::NodeRegistry& registry) {
   registerMergeConstraints(registry);
   registerPropagate(registry);
   registerLocalSmooth(registry);
+  registerRemoveCurves(registry);
   registerExtractDegenerateCurves(registry);
   registerExportVtu(registry);
   registerExportVdb(registry);

@@ -31,4 +31,6 @@ std::size_t instancePointsBytes(const core::InstancePoints& points) {
   return points.points.size() * sizeof(core::InstancePoint);
 }
 
+std::size_t regionBytes(const core::TetRegion& region) { return region.byteSize(); }
+
 }  // namespace tfd::nodes::detail

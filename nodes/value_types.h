@@ -2,6 +2,7 @@
 // The graph value types of tfd's nodes, with their stable display names and approximate sizes
 // for the memory-bounded cook cache. Include this header in every node file.
 #include "core/design/design_element.h"
+#include "core/region/tet_region.h"
 #include "core/surface/surface_mesh.h"
 #include "core/synth/instance_points.h"
 #include "core/tensor_field.h"
@@ -16,6 +17,7 @@ std::size_t constraintBytes(const core::ConstraintSet& set);
 std::size_t curvesBytes(const core::DegenerateCurves& curves);
 std::size_t surfaceMeshBytes(const core::SurfaceMesh& mesh);
 std::size_t instancePointsBytes(const core::InstancePoints& points);
+std::size_t regionBytes(const core::TetRegion& region);
 }  // namespace tfd::nodes::detail
 
 TFD_GRAPH_VALUE_TYPE_SIZED(tfd::core::TetMesh, "TetMesh", tfd::nodes::detail::meshBytes);
@@ -27,3 +29,4 @@ TFD_GRAPH_VALUE_TYPE_SIZED(tfd::core::DegenerateCurves, "DegenerateCurves",
 TFD_GRAPH_VALUE_TYPE_SIZED(tfd::core::SurfaceMesh, "Mesh", tfd::nodes::detail::surfaceMeshBytes);
 TFD_GRAPH_VALUE_TYPE_SIZED(tfd::core::InstancePoints, "Points",
                            tfd::nodes::detail::instancePointsBytes);
+TFD_GRAPH_VALUE_TYPE_SIZED(tfd::core::TetRegion, "Region", tfd::nodes::detail::regionBytes);
