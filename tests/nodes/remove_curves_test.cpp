@@ -95,7 +95,7 @@ TEST(RemoveCurvesNode, ARefusedPickFailsTheNodeAndNothingDownstreamIsWritten) {
   graph::CookOptions options;
   options.outDir = dir.path();
   graph::Graph g = example();
-  g.setParam("remove", "picks", std::vector<graph::Vec3Param>{{0.6, 0.0, 0.1}});
+  g.setParam("remove", "picks", std::vector<graph::Vec3Param>{{0.75, 0.0, 0.1}});
   graph::Evaluator ev;
   const graph::CookResult r = ev.cook(g, options);
   EXPECT_FALSE(r.ok());
