@@ -45,7 +45,20 @@ void RemoveLoop1M(benchmark::State& state) {
   o.picks = {Vec3(0.3, 0, 0)};
   o.regionDistance = state.range(0) < 0 ? -1 : state.range(0) / 100.0;
   RemoveCurvesResult last{field, {}, {}, {}};
-  for (auto _ : state) last = removeCurves(field, o);
+  bool verified = true;
+  std::size_t failedRegion = 0;
+  for (auto _ : state) {
+    try {
+      last = removeCurves(field, o);
+    } catch (const RemovalFailed& e) {  // reported, not hidden: counted as verified = 0
+      verified = false;
+      const std::string m = e.what();
+      const auto at = m.find("last region ");
+      if (at != std::string::npos) failedRegion = std::stoul(m.substr(at + 12));
+    }
+  }
+  state.counters["verified"] = verified;
+  if (!verified) state.counters["failed_region_tets"] = double(failedRegion);
   state.counters["tets"] = double(field.mesh().tetCount());
   state.counters["region_tets"] = double(last.report.regionTets);
   state.counters["free_vertices"] = double(last.report.freeVertices);
