@@ -12,6 +12,7 @@ void registerCurveConstraint(graph::NodeRegistry&);
 void registerMergeConstraints(graph::NodeRegistry&);
 void registerPropagate(graph::NodeRegistry&);
 void registerLocalSmooth(graph::NodeRegistry&);
+void registerRemoveCurves(graph::NodeRegistry&);
 void registerExtractDegenerateCurves(graph::NodeRegistry&);
 void registerGaborNoise(graph::NodeRegistry&);
 void registerExportVtu(graph::NodeRegistry&);
@@ -32,6 +33,7 @@ void registerAll(graph::NodeRegistry& registry) {
   registerMergeConstraints(registry);
   registerPropagate(registry);
   registerLocalSmooth(registry);
+  registerRemoveCurves(registry);
   registerExtractDegenerateCurves(registry);
   registerGaborNoise(registry);
   registerExportVtu(registry);

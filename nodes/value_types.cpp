@@ -35,5 +35,6 @@ std::size_t volumeBytes(const core::ScalarVolume& volume) {
   return volume.values.size() * sizeof(float) + volume.mask.size();
 }
 std::size_t linesBytes(const core::Polylines& lines) { return lines.byteSize(); }
+std::size_t regionBytes(const core::TetRegion& region) { return region.byteSize(); }
 
 }  // namespace tfd::nodes::detail

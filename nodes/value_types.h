@@ -3,6 +3,7 @@
 // for the memory-bounded cook cache. Include this header in every node file.
 #include "core/design/design_element.h"
 #include "core/scalar_volume.h"
+#include "core/region/tet_region.h"
 #include "core/surface/surface_mesh.h"
 #include "core/synth/instance_points.h"
 #include "core/tensor_field.h"
@@ -20,6 +21,7 @@ std::size_t surfaceMeshBytes(const core::SurfaceMesh& mesh);
 std::size_t instancePointsBytes(const core::InstancePoints& points);
 std::size_t volumeBytes(const core::ScalarVolume& volume);
 std::size_t linesBytes(const core::Polylines& lines);
+std::size_t regionBytes(const core::TetRegion& region);
 }  // namespace tfd::nodes::detail
 
 TFD_GRAPH_VALUE_TYPE_SIZED(tfd::core::TetMesh, "TetMesh", tfd::nodes::detail::meshBytes);
@@ -33,3 +35,4 @@ TFD_GRAPH_VALUE_TYPE_SIZED(tfd::core::InstancePoints, "Points",
                            tfd::nodes::detail::instancePointsBytes);
 TFD_GRAPH_VALUE_TYPE_SIZED(tfd::core::ScalarVolume, "Volume", tfd::nodes::detail::volumeBytes);
 TFD_GRAPH_VALUE_TYPE_SIZED(tfd::core::Polylines, "Lines", tfd::nodes::detail::linesBytes);
+TFD_GRAPH_VALUE_TYPE_SIZED(tfd::core::TetRegion, "Region", tfd::nodes::detail::regionBytes);

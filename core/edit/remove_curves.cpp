@@ -155,8 +155,13 @@ RemoveCurvesResult removeCurves(const TensorField& field, const RemoveCurvesOpti
   std::vector<int> owner(mesh.tetCount(), -1);
   for (const DegenerateCurve& c : all.curves()) {
     if (std::find(targets.ids.begin(), targets.ids.end(), c.id) != targets.ids.end()) continue;
+    // The curve's tets and every tet around their vertices: then no vertex of the curve's tets
+    // is a region vertex, and neither are their neighbours' values, which the extraction's
+    // fallback perturbation looks at (its scale comes from the tensors around a vertex).
     for (int t : sourceTets(mesh, c))
-      if (!forbidden[t]) forbidden[t] = 1, owner[t] = c.id;
+      for (int v : mesh.tets()[t])
+        for (int n : mesh.vertexTets(v))
+          if (!forbidden[n]) forbidden[n] = 1, owner[n] = c.id;
   }
   const std::vector<int> seeds = seedTets(mesh, targets);
   for (int s : seeds)

@@ -22,12 +22,16 @@ void declare(graph::NodeDecl& d) {
        "`T.type` (1 linear, -1 planar, 0 neutral). With `curves` connected, every tet that a "
        "degenerate curve passes through gets the cell arrays `curve_id` (-1 elsewhere) and "
        "`curve_colour` (the paper's Fig. 5 colours: L-wedge green, L-trisector blue, P-wedge "
-       "yellow, P-trisector red, transition white); threshold on curve_id >= 0 to see them.")
+       "yellow, P-trisector red, transition white); threshold on curve_id >= 0 to see them. "
+       "With `region` connected (e.g. RemoveCurves' region), the cell array `region` is 1 on "
+       "its tets and 0 elsewhere.")
       .category("Export")
       .sideEffect();
   d.input<core::TensorField>("field");
   d.input<core::DegenerateCurves>("curves").optional().doc(
       "Degenerate curves of this field (ExtractDegenerateCurves) to colour the tets.");
+  d.input<core::TetRegion>("region").optional().doc(
+      "Tets of an edit's region (RemoveCurves) to mark with the cell array `region`.");
   d.param<std::string>("path").byDefault("field.vtu").outputFile("*.vtu").doc("Output file.");
   d.param<std::string>("encoding")
       .choices(kEncodings)
@@ -80,6 +84,15 @@ void cook(graph::CookContext& c) {
       marked += o.cellData[0].values[t] >= 0;
     c.info(std::to_string(marked) + " tets coloured by " + std::to_string(curves->size()) +
            " degenerate curves");
+  }
+  if (const auto region = c.inputOr<core::TetRegion>("region", nullptr)) {
+    const std::size_t n = field->mesh().tetCount();
+    if (region->mesh->tetCount() != n || region->mesh->vertexCount() != field->mesh().vertexCount())
+      throw graph::NodeError("input 'region': the region belongs to another mesh than the field");
+    std::vector<double> flags(n, 0);
+    for (int t : region->tets) flags[t] = 1;
+    o.cellData.push_back({"region", 1, std::move(flags), io::VtkType::UInt8});
+    c.info(std::to_string(region->tets.size()) + " tets marked as the region");
   }
   const std::filesystem::path path = c.path("path");
   io::writeFieldVtu(path, *field, o, progressOf(c));

@@ -1,0 +1,166 @@
+// Degenerate curve removal (core/edit/remove_curves.h), verification included.
+//  - RemoveLoop1M: a mixed loop removed from a field on a 998,250-tet Kuhn box, for several
+//    region distances (time against region size; peak memory).
+//  - RandomRemovals: removals on fields from random point constraints and from the boundary
+//    curvature on several solids; each target picked automatically among the curves whose
+//    scenario applies. Counts successes, refusals (no ball region avoids the other curves)
+//    and failures (verification failed after the retries).
+// Commands and figures: bench/RESULTS.md.
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <fstream>
+#include <random>
+#include <string>
+
+#include "core/design/propagate.h"
+#include "core/edit/remove_curves.h"
+#include "core/structured_mesh.h"
+#include "core/topology/extract_degenerate_curves.h"
+#include "tests/core/design/curve_test_meshes.h"
+#include "tests/core/edit/removal_test_fields.h"
+
+namespace {
+
+using namespace tfd::core;
+
+double peakMegabytes() {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024;
+  return 0;
+}
+
+const TensorField& loopField1M() {
+  static const TensorField field =
+      testing::designedField(makeBoxMesh(55, 55, 55, Vec3(-1, -1, -1), Vec3(1, 1, 1)),
+                             [](const Vec3& p) { return testing::loopW(p, 0.3); });
+  return field;
+}
+
+void RemoveLoop1M(benchmark::State& state) {
+  const TensorField& field = loopField1M();
+  RemoveCurvesOptions o;
+  o.picks = {Vec3(0.3, 0, 0)};
+  o.regionDistance = state.range(0) < 0 ? -1 : state.range(0) / 100.0;
+  RemoveCurvesResult last{field, {}, {}, {}};
+  bool verified = true;
+  std::size_t failedRegion = 0;
+  for (auto _ : state) {
+    try {
+      last = removeCurves(field, o);
+    } catch (const RemovalFailed& e) {  // reported, not hidden: counted as verified = 0
+      verified = false;
+      const std::string m = e.what();
+      const auto at = m.find("last region ");
+      if (at != std::string::npos) failedRegion = std::stoul(m.substr(at + 12));
+    }
+  }
+  state.counters["verified"] = verified;
+  if (!verified) state.counters["failed_region_tets"] = double(failedRegion);
+  state.counters["tets"] = double(field.mesh().tetCount());
+  state.counters["region_tets"] = double(last.report.regionTets);
+  state.counters["free_vertices"] = double(last.report.freeVertices);
+  state.counters["tries"] = double(last.report.tries.size());
+  state.counters["curves_after"] = double(last.curves.size());
+  state.counters["peak_MB"] = peakMegabytes();
+}
+BENCHMARK(RemoveLoop1M)
+    ->Arg(5)
+    ->Arg(10)
+    ->Arg(20)
+    ->Arg(-1)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1)
+    ->Repetitions(2)
+    ->ReportAggregatesOnly(false);
+
+/// A field from random point constraints (degenerate and not) on the mesh.
+TensorField randomDesign(std::shared_ptr<const TetMesh> mesh, std::mt19937& rng, bool curvature) {
+  std::uniform_real_distribution<double> u(-0.5, 0.5), angle(0, 360);
+  ConstraintSet set;
+  const int n = curvature ? 1 : 3 + int(rng() % 3);
+  for (int i = 0; i < n; ++i) {
+    PointElement e;
+    const Mat3 frame = rotationFromEulerDegrees(Vec3(angle(rng), angle(rng), angle(rng)));
+    const Vec3 at(u(rng), u(rng), u(rng));
+    if (rng() % 2) {
+      e.field = makeDegenerateLinearization(
+          at, frame, rng() % 2 ? DegenerateType::Linear : DegenerateType::Planar,
+          rng() % 2 ? DegeneratePattern::Wedge : DegeneratePattern::Trisector);
+      e.degenerate = true;
+    } else {
+      e.field = makeTensorLinearization(at, frame, Vec3(1, 0.2 * u(rng), -1));
+    }
+    set.points.push_back(e);
+  }
+  PropagateOptions po;
+  po.curvatureBoundary = curvature;
+  po.boundaryConforming = !curvature;
+  return propagate(std::move(mesh), set, po).field;
+}
+
+void RandomRemovals(benchmark::State& state) {
+  const std::vector<std::pair<const char*, std::shared_ptr<const TetMesh>>> solids = {
+      {"box", testing::jitteredBox(14, 0.15)},
+      {"ball", testing::carvedBall(18)},
+      {"torus", testing::keepTets(*testing::jitteredBox(20, 0.15), [](const Vec3& c) {
+         return std::hypot(std::hypot(c.x(), c.y()) - 0.6, c.z()) < 0.33;
+       })}};
+  int attempts = 0, successes = 0, refusals = 0, failures = 0, fields = 0;
+  std::map<std::string, int> failedChecks;
+  for (auto _ : state) {
+    std::mt19937 rng(11);
+    while (attempts < 100 && fields < 400) {
+      const auto& [name, mesh] = solids[fields % solids.size()];
+      const bool curvature = fields % 4 == 3;
+      ++fields;
+      TensorField field = [&] {
+        try {
+          return randomDesign(mesh, rng, curvature);
+        } catch (const Error&) {
+          return TensorField(mesh, std::vector<Tensor>(mesh->vertexCount()));
+        }
+      }();
+      const DegenerateCurves curves = extractDegenerateCurves(field);
+      int tried = 0;
+      for (const DegenerateCurve& c : curves.curves()) {
+        if (tried >= 3 || attempts >= 100) break;
+        const DegenerateCurve* one[] = {&c};
+        try {
+          removalScenario(one);
+        } catch (const RemovalRefused&) {
+          continue;  // no scenario for this curve alone
+        }
+        ++tried, ++attempts;
+        RemoveCurvesOptions o;
+        o.picks = {c.points[c.points.size() / 2]};
+        try {
+          removeCurves(field, o);
+          ++successes;
+        } catch (const RemovalRefused&) {
+          ++refusals;
+        } catch (const RemovalFailed& e) {
+          ++failures;
+          const std::string m = e.what();
+          const auto a = m.find("check '"), b = m.find("'", a + 7);
+          ++failedChecks[m.substr(a + 7, b - a - 7)];
+        }
+      }
+    }
+  }
+  state.counters["fields"] = fields;
+  state.counters["attempts"] = attempts;
+  state.counters["successes"] = successes;
+  state.counters["refusals"] = refusals;
+  state.counters["failures"] = failures;
+  state.counters["success_of_possible"] =
+      successes + failures > 0 ? double(successes) / (successes + failures) : 0;
+  for (const auto& [check, n] : failedChecks) state.counters["failed:" + check] = n;
+}
+BENCHMARK(RandomRemovals)->Iterations(1)->Unit(benchmark::kSecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
