@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <sstream>
 #include <string>
 
 #include "core/error.h"
@@ -17,6 +18,7 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr double kTruncation = 0.05;  ///< envelope value at the truncation radius
 constexpr double kBlendWidth = 0.5;   ///< confidence at which kernels are fully anisotropic
+constexpr double kMaxKernels = 2e7;   ///< about 1 GB of impulses: refuse more
 
 std::uint64_t mix64(std::uint64_t x) {  // splitmix64 finaliser
   x += 0x9E3779B97F4A7C15ull;
@@ -185,8 +187,16 @@ GaborNoise::GaborNoise(const TensorField& field, const GaborNoiseOptions& option
     cellMin_[a] = int(std::floor((boxMin[a] - r) / r));
     cellDims_[a] = int(std::floor((boxMax[a] + r) / r)) - cellMin_[a] + 1;
   }
-  const std::size_t cells = std::size_t(cellDims_[0]) * cellDims_[1] * cellDims_[2];
   const double mean = shape_.density * r * r * r;
+  const double cellCount = double(cellDims_[0]) * cellDims_[1] * cellDims_[2];
+  if (cellCount * std::max(1.0, mean) > kMaxKernels) {
+    std::ostringstream m;
+    m << "Gabor noise: frequency " << options.frequency << " needs about "
+      << std::llround(cellCount * mean) << " kernels over this volume (at most " << kMaxKernels
+      << "): lower the frequency";
+    throw Error(m.str());
+  }
+  const std::size_t cells = std::size_t(cellCount);
   const NearestBoundaryVertex nearest(field.mesh());
   field.mesh().locator();  // build once, outside the parallel loop
 

@@ -87,7 +87,8 @@ struct GaborImpulse {
 /// keeps its statistics up to the boundary.
 class GaborNoise {
  public:
-  /// Throws like gaborKernelShape; core::Cancelled when `progress` is cancelled.
+  /// Throws like gaborKernelShape, and core::Error naming the frequency when the box would need
+  /// more than 2e7 kernels; core::Cancelled when `progress` is cancelled.
   GaborNoise(const TensorField& field, const GaborNoiseOptions& options, const Vec3& boxMin,
              const Vec3& boxMax, const Progress& progress = Progress());
 

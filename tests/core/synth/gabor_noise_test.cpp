@@ -128,6 +128,14 @@ TEST(GaborNoise, BadOptionsNameTheOption) {
   o = options(NoiseOrientation::Auto);
   o.impulsesPerKernel = 500;
   EXPECT_THROW(gaborKernelShape(o), Error);
+  // Far too many kernels for the box: refused before anything is allocated, naming frequency.
+  o = options(NoiseOrientation::Auto, 2000);
+  try {
+    GaborNoise(constantField(Tensor{}), o, Vec3::Zero(), Vec3::Ones());
+    ADD_FAILURE() << "accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("frequency 2000"), std::string::npos) << e.what();
+  }
 }
 
 TEST(GaborNoise, DirectionsFollowTheTensor) {
