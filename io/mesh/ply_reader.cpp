@@ -127,7 +127,7 @@ core::SurfaceMesh readPly(const std::filesystem::path& path) {
     if (keyword == "comment" || keyword == "obj_info") continue;
     if (keyword == "element") {
       Element e;
-      e.name = std::string(h.token());
+      e.name = printableText(h.token());  // names reach messages
       if (e.name.empty()) h.fail("expected an element name");
       e.count = h.integer("the count of element '" + e.name + "'");
       if (e.count < 0) h.fail("negative count of element '" + e.name + "'");
@@ -148,7 +148,7 @@ core::SurfaceMesh readPly(const std::filesystem::path& path) {
       if (!parseType(typeName, p.type)) {
         h.fail("unknown property type " + describeToken(typeName));
       }
-      p.name = std::string(h.token());
+      p.name = printableText(h.token());
       if (p.name.empty()) h.fail("expected a property name");
       h.expectLineEnd("the property name");
       elements.back().properties.push_back(std::move(p));
