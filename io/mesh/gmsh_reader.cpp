@@ -123,7 +123,7 @@ class GmshReader {
   void skipSection(const std::string& name) {
     const std::string end = "$End" + name;
     for (;;) {
-      if (!s_.nextLine()) s_.failAtEnd("expected '" + end + "'");
+      if (!s_.nextLine()) s_.failAtEnd("expected '" + printableText(end) + "'");
       if (s_.token() == end) return;
     }
   }

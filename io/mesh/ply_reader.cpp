@@ -115,7 +115,7 @@ Property parseProperty(TextScanner& h) {
   if (!parseType(typeName, p.type)) {
     h.fail("unknown property type " + describeToken(typeName));
   }
-  p.name = std::string(h.token());
+  p.name = printableText(h.token());  // names reach messages
   if (p.name.empty()) h.fail("expected a property name");
   h.expectLineEnd("the property name");
   return p;
@@ -147,7 +147,7 @@ Header parseHeader(TextScanner& h, const std::string& file) {
     if (keyword == "comment" || keyword == "obj_info") continue;
     if (keyword == "element") {
       Element e;
-      e.name = std::string(h.token());
+      e.name = printableText(h.token());  // names reach messages
       if (e.name.empty()) h.fail("expected an element name");
       e.count = h.integer("the count of element '" + e.name + "'");
       if (e.count < 0) h.fail("negative count of element '" + e.name + "'");

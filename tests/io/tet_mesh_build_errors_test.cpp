@@ -126,6 +126,14 @@ TEST_F(TetMeshErrors, GmshProblems) {
       << m;
 }
 
+// Found by fuzz_read_gmsh: an unknown section's name was echoed raw in "expected '$End...'".
+TEST_F(TetMeshErrors, GmshSectionNamesAreQuotedPrintably) {
+  const std::string m = error([&] {
+    readGmsh(file("s.msh", "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Odd\x1b\x07\n1 2\n"));
+  });
+  EXPECT_EQ(m, "file '" + path("s.msh") + "': expected '$EndOdd\\x1b\\x07' (file ended at line 5)");
+}
+
 TEST_F(TetMeshErrors, VtuProblems) {
   auto vtu = [](const std::string& types, const std::string& extraRoot = "") {
     return "<VTKFile type=\"UnstructuredGrid\"" + extraRoot +

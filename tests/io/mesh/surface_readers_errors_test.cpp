@@ -82,6 +82,13 @@ TEST_F(SurfaceErrors, OffBadNumbersIndicesAndEmptyMeshes) {
   EXPECT_NE(m.find("finite number"), std::string::npos) << m;
 }
 
+// Found by fuzz_read_ply: element and property names were echoed raw in messages.
+TEST_F(SurfaceErrors, PlyNamesAreQuotedPrintably) {
+  const std::string m = error("n.ply", "ply\nformat ascii 1.0\nelement v\x1b\x07 x\n", io::readPly);
+  EXPECT_NE(m.find("element 'v\\x1b\\x07'"), std::string::npos) << m;
+  for (unsigned char c : m) EXPECT_GE(c, 0x20) << m;
+}
+
 TEST_F(SurfaceErrors, MissingFileIsNamed) {
   try {
     readOff(dir_ / "missing.off");
