@@ -70,8 +70,9 @@ class Propagation {
       if (count == tets_.size()) break;
       // No tet keeps the set a ball: take the one sharing most faces (lowest index on ties).
       int best = -1, bestShared = 0;
+      std::erase_if(deferred, [&](int t) { return visited_[t] != 0; });
       for (int t : deferred) {
-        const int s = visited_[t] ? 0 : shared(t);
+        const int s = shared(t);
         if (s > bestShared || (s == bestShared && s > 0 && t < best)) best = t, bestShared = s;
       }
       if (best < 0) {

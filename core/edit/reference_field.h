@@ -6,7 +6,8 @@
 // (the Gauss map ϕ). U is a unit vector ⊥ N at every vertex, made by parallel transport on the
 // sphere (the minimal rotation taking N_a to N_b, core/design/parallel_transport.h) over a tet
 // order that keeps the visited tets a topological ball: a tet joins when it shares with the
-// visited set one face and brings a new vertex, two faces and a new edge, or three faces. The
+// visited set one face and brings a new vertex, two faces and a new edge, or three faces
+// (candidates sharing most faces first, breadth-first among equals, from the seed's tet). The
 // new vertex takes U transported from a vertex of the tet (that edge gets jump zero); every
 // other new edge (a, b) takes its jump from a triangle (a, b, c) of the tet whose other two
 // edges are known, g_ab = Ω(N_a, N_b, N_c) − g_bc − g_ca.
