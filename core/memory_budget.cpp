@@ -124,12 +124,12 @@ std::uint64_t mappedBytes() {
 }
 }  // namespace
 
-AddressSpaceCap::AddressSpaceCap() {
+AddressSpaceCap::AddressSpaceCap(std::uint64_t bytes) {
   if (kAddressSanitizer) return;
   rlimit limit{};
   const std::uint64_t mapped = mappedBytes();
   if (mapped == 0 || ::getrlimit(RLIMIT_AS, &limit) != 0) return;
-  const std::uint64_t cap = mapped + memoryBudget();
+  const std::uint64_t cap = mapped + (bytes != 0 ? bytes : memoryBudget());
   if (limit.rlim_cur != RLIM_INFINITY && limit.rlim_cur <= cap) return;
   previous_ = limit.rlim_cur;
   limit.rlim_cur = cap;

@@ -37,7 +37,8 @@ std::uint64_t parseByteSize(const std::string& text);
 /// limit is already set. Not for cooks: their threads share the one limit.
 class AddressSpaceCap {
  public:
-  AddressSpaceCap();
+  /// `bytes` above what is mapped now; 0: memoryBudget().
+  explicit AddressSpaceCap(std::uint64_t bytes = 0);
   ~AddressSpaceCap();
   AddressSpaceCap(const AddressSpaceCap&) = delete;
   AddressSpaceCap& operator=(const AddressSpaceCap&) = delete;

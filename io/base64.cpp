@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cctype>
 
+#include "io/text_scanner.h"
+
 namespace tfd::io {
 namespace {
 
@@ -48,7 +50,7 @@ bool Base64Decoder::nextGroup(std::string& out) {
     const char c = text_[pos_++];
     if (std::isspace(static_cast<unsigned char>(c))) continue;
     if (c != '=' && valueOf(c) < 0) {
-      error_ = std::string("invalid base64 character '") + c + "'";
+      error_ = "invalid base64 character '" + printableText(std::string_view(&c, 1)) + "'";
       return false;
     }
     group[n++] = c;

@@ -1,5 +1,6 @@
 // tfd info FILE: a summary of a graph file or of any file kind registered in
 // register_describers.cpp.
+#include <algorithm>
 #include <iostream>
 #include <new>
 
@@ -25,8 +26,14 @@ int runInfo(const std::string& file, const Context& context) {
     return kUsage;
   }
   try {
-    // A damaged file can make a library allocate without bound: cap the address space.
-    const core::AddressSpaceCap cap;
+    // A damaged file can make a library allocate without bound (a 10 KB .vdb grew OpenVDB to
+    // 10 GB): cap the address space at the budget, by default also at 1 GB + 256 bytes per
+    // byte of the file, far more than describing any intact file takes.
+    std::uint64_t bytes = core::memoryBudget();
+    const std::uintmax_t fileBytes = std::filesystem::file_size(file, ec);
+    if (!core::memoryBudgetIsExplicit() && !ec && fileBytes < (std::uintmax_t(1) << 40))
+      bytes = std::min<std::uint64_t>(bytes, (std::uint64_t(1) << 30) + 256 * fileBytes);
+    const core::AddressSpaceCap cap(bytes);
     return (*describe)(file, std::cout);
   } catch (const std::bad_alloc&) {
     printError(file + ": reading it needs more memory than the budget allows (a damaged file?)");
