@@ -19,7 +19,6 @@
 #include "core/structured_mesh.h"
 #include "core/topology/curve_tets.h"
 #include "core/topology/extract_degenerate_curves.h"
-#include "io/tetgen/tetgen_mesher.h"
 
 namespace tfd::core {
 namespace {
@@ -238,37 +237,8 @@ TEST(SingularityFreeField, StronglyTurningFieldNeedsTheJumps) {
   EXPECT_TRUE(curves.empty()) << curves.summary();
 }
 
-/// The same kind of field on a TetGen sphere (unstructured, obtuse tets): ball regions (grown
-/// tet by tet) inside and reaching the domain surface are propagated in a ball order and come
-/// out curve-free. (Regions cut by a plain distance test are often not balls on such meshes:
-/// pinched edges; the propagation then reports non-ball steps.)
-TEST(SingularityFreeField, TetGenSphereRegionsInsideAndAtTheSurface) {
-  const auto mesh = io::meshPrimitive(PrimitiveShape::Sphere, 20000);
-  std::vector<Tensor> values;
-  for (const Vec3& p : mesh->positions()) {
-    const Mat3 r = (Eigen::AngleAxisd(2.5 * p.x(), Vec3::UnitY()) *
-                    Eigen::AngleAxisd(2.0 * p.y() + 0.5 * p.z(), Vec3::UnitX()))
-                       .toRotationMatrix();
-    values.push_back(Tensor::fromMatrix(r * Vec3(1.5, -0.2, -1.3).asDiagonal() * r.transpose()));
-  }
-  const TensorField field(mesh, values);
-  ASSERT_TRUE(extractDegenerateCurves(field).empty());
-  for (const Vec3& centre : {Vec3(0.1, -0.05, 0.02), Vec3(0.45, 0.2, 0.1)}) {
-    const std::vector<int> region = growBall(*mesh, centre, 0.7);
-    ASSERT_GT(region.size(), 3000u);
-    ASSERT_EQ(boundaryEuler(*mesh, region), 2);
-    SingularityFreeReport report;
-    const TensorField after =
-        singularityFreeField(field, region, std::vector<char>(mesh->vertexCount(), 0),
-                             DegenerateType::Planar, {}, &report);
-    EXPECT_EQ(report.nonBallSteps, 0) << report.summary();
-    EXPECT_LT(report.maxHolonomyDefect, 1e-12);
-    EXPECT_GT(report.freeMinGap12, 0);
-    EXPECT_GT(report.freeMinGap23, 0);
-    const DegenerateCurves curves = extractDegenerateCurves(after);
-    EXPECT_TRUE(curves.empty()) << curves.summary();
-  }
-}
+// The same property on an unstructured TetGen sphere is an io-layer test:
+// tests/io/tetgen/singularity_free_field_tetgen_test.cpp.
 
 TEST(SingularityFreeField, KeepsTheNonRepeatingEigenvectorAndPositiveGapsInside) {
   const ArchCase c;
