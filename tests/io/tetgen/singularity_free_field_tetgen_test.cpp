@@ -8,6 +8,7 @@
 #include <Eigen/Geometry>
 
 #include "core/edit/singularity_free_field.h"
+#include "core/point_locator.h"
 #include "core/region/ball_check.h"
 #include "core/region/ball_region.h"
 #include "core/topology/extract_degenerate_curves.h"

@@ -244,7 +244,7 @@ TEST_F(Canvas, DeleteRemovesSelectedNodesAndLinksInOneStep) {
   ASSERT_TRUE(scene->deleteSelection());
   EXPECT_EQ(doc->undoStack()->count(), steps + 1);
   EXPECT_EQ(doc->graph().findNode("vtu"), nullptr);
-  EXPECT_EQ(doc->graph().links().size(), 14u - 3 - 1);
+  EXPECT_EQ(doc->graph().links().size(), 15u - 3 - 1);
   doc->undoStack()->undo();
   EXPECT_EQ(doc->text(), original);
 }

@@ -172,8 +172,14 @@ TEST_F(Editor, AClickOnADrawnCurveFillsTheSelectedNodesPick) {
   ViewportWidget* view = window->viewport()->view();
   const auto& xyz = view->scene().curves.positions;
   ASSERT_GE(xyz.size(), 6u);
-  const render::Vec3 a(xyz[0], xyz[1], xyz[2]), b(xyz[3], xyz[4], xyz[5]);
-  const render::Vec3 mid = 0.5 * (a + b);
+  // The segment nearest the eye: no other curve can stand in front of its midpoint.
+  const render::Vec3 eye = view->camera().eye();
+  render::Vec3 mid = render::Vec3::Zero();
+  for (std::size_t i = 0; i + 6 <= xyz.size(); i += 6) {
+    const render::Vec3 a(xyz[i], xyz[i + 1], xyz[i + 2]), b(xyz[i + 3], xyz[i + 4], xyz[i + 5]);
+    const render::Vec3 m = 0.5 * (a + b);
+    if (i == 0 || (m - eye).norm() < (mid - eye).norm()) mid = m;
+  }
   const auto pixel = view->camera().project(mid, view->width(), view->height());
   ASSERT_TRUE(pixel);
   const int steps = doc.undoStack()->count();

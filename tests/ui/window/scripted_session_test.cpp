@@ -97,6 +97,7 @@ void buildDefaultExample(MainWindow& w) {
                       {"ball.mesh", "field.mesh"},
                       {"design.constraints", "field.constraints"},
                       {"field.field", "topology.field"},
+                      {"design.constraints", "topology.constraints"},
                       {"field.field", "vtu.field"},
                       {"topology.curves", "vtu.curves"},
                       {"field.field", "vdb.field"},
