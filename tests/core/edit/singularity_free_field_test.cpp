@@ -8,9 +8,6 @@
 #include <array>
 #include <cmath>
 #include <cstring>
-#include <map>
-#include <queue>
-#include <set>
 
 #include "core/edit/region_complex.h"
 #include "core/edit/singularity_free_field.h"
@@ -66,92 +63,6 @@ struct ArchCase {
   }
   std::vector<char> noHeld() const { return std::vector<char>(mesh->vertexCount(), 0); }
 };
-
-/// Euler characteristic of the region's boundary surface, or −100 when an edge of it is not
-/// shared by exactly two boundary triangles (a ball has a manifold boundary with χ = 2; this
-/// does not see pinched vertices).
-int boundaryEuler(const TetMesh& mesh, const std::vector<int>& region) {
-  std::map<std::array<int, 2>, int> edges;
-  std::set<int> vertices;
-  int faces = 0;
-  for (int t : region) {
-    for (int f : mesh.tetFaces()[t]) {
-      const auto& ft = mesh.faceTets()[f];
-      const int other = ft[0] == t ? ft[1] : ft[0];
-      if (other >= 0 && std::binary_search(region.begin(), region.end(), other)) continue;
-      ++faces;
-      const auto& v = mesh.faces()[f];
-      for (int i = 0; i < 3; ++i) {
-        vertices.insert(v[i]);
-        ++edges[{std::min(v[i], v[(i + 1) % 3]), std::max(v[i], v[(i + 1) % 3])}];
-      }
-    }
-  }
-  for (const auto& [e, n] : edges)
-    if (n != 2) return -100;
-  return static_cast<int>(vertices.size()) - static_cast<int>(edges.size()) + faces;
-}
-
-/// A ball region grown from the tet nearest `centre`, nearest centroid first, taking a tet only
-/// when its contact with the region is a disk (one face and a new vertex, two faces and a new
-/// edge, or three faces), up to centroids within `radius`.
-std::vector<int> growBall(const TetMesh& mesh, const Vec3& centre, double radius) {
-  const auto centroid = [&](int t) {
-    Vec3 m = Vec3::Zero();
-    for (int v : mesh.tets()[t]) m += mesh.positions()[v] / 4;
-    return m;
-  };
-  std::vector<char> in(mesh.tetCount(), 0), vertexIn(mesh.vertexCount(), 0);
-  std::vector<char> edgeIn(mesh.edges().size(), 0);
-  using Entry = std::pair<double, int>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
-  int first = 0;
-  for (std::size_t t = 1; t < mesh.tetCount(); ++t)
-    if ((centroid(int(t)) - centre).norm() < (centroid(first) - centre).norm()) first = int(t);
-  const auto add = [&](int t) {
-    in[t] = 1;
-    for (int v : mesh.tets()[t]) vertexIn[v] = 1;
-    for (int e : mesh.tetEdges()[t]) edgeIn[e] = 1;
-    for (int f : mesh.tetFaces()[t])
-      for (int o : mesh.faceTets()[f])
-        if (o >= 0 && !in[o] && (centroid(o) - centre).norm() < radius)
-          queue.emplace((centroid(o) - centre).norm(), o);
-  };
-  const auto simple = [&](int t) {
-    int shared[4], s = 0;
-    for (int i = 0; i < 4; ++i) {
-      const auto& ft = mesh.faceTets()[mesh.tetFaces()[t][i]];
-      const int o = ft[0] == t ? ft[1] : ft[0];
-      if (o >= 0 && in[o]) shared[s++] = i;
-    }
-    constexpr int kEdge[4][4] = {{-1, 0, 1, 2}, {0, -1, 3, 4}, {1, 3, -1, 5}, {2, 4, 5, -1}};
-    if (s == 1) return !vertexIn[mesh.tets()[t][shared[0]]];
-    if (s == 2) return !edgeIn[mesh.tetEdges()[t][kEdge[shared[0]][shared[1]]]];
-    return s == 3;
-  };
-  add(first);
-  for (bool grew = true; grew;) {  // a tet refused once may become simple later
-    grew = false;
-    std::vector<Entry> refused;
-    while (!queue.empty()) {
-      const auto [d, t] = queue.top();
-      queue.pop();
-      if (in[t]) continue;
-      if (simple(t)) {
-        add(t);
-        grew = true;
-      } else {
-        refused.emplace_back(d, t);
-      }
-    }
-    for (const Entry& e : refused) queue.push(e);
-    if (!grew) break;
-  }
-  std::vector<int> out;
-  for (std::size_t t = 0; t < mesh.tetCount(); ++t)
-    if (in[t]) out.push_back(static_cast<int>(t));
-  return out;
-}
 
 bool bitwiseEqual(const Tensor& a, const Tensor& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 

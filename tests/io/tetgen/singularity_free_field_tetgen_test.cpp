@@ -38,8 +38,9 @@ TEST(SingularityFreeFieldTetGen, SphereRegionsInsideAndAtTheSurfaceComeOutCurveF
     ASSERT_GT(region.tets.size(), 3000u);
     const BallCheck check = checkTopologicalBall(*mesh, region.tets);
     ASSERT_TRUE(check.ball) << check.problem;
-    if (centre.x() > 0.4)
+    if (centre.x() > 0.4) {
       EXPECT_GT(check.surfaceFaces, 0) << "the second region reaches the surface";
+    }
     SingularityFreeReport report;
     const TensorField after =
         singularityFreeField(field, region.tets, std::vector<char>(mesh->vertexCount(), 0),
