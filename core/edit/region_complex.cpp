@@ -2,22 +2,40 @@
 
 #include <algorithm>
 #include <string>
+#include <utility>
 
 #include "core/error.h"
 
 namespace tfd::core {
 namespace {
 
-int indexIn(const std::vector<int>& sorted, int value) {
-  const auto it = std::lower_bound(sorted.begin(), sorted.end(), value);
-  return it != sorted.end() && *it == value ? static_cast<int>(it - sorted.begin()) : -1;
+int lookup(const std::vector<int>& table, int id) {
+  return id >= 0 && static_cast<std::size_t>(id) < table.size() ? table[id] : -1;
+}
+
+/// Ascending unique ids of `ids` (each < `count`), their local index in `table` (size count,
+/// −1 elsewhere). A flag per id instead of sorting the repeats: only the unique ids are sorted.
+std::vector<int> uniqueAscending(const std::vector<int>& ids, std::size_t count,
+                                 std::vector<int>& table) {
+  table.assign(count, -1);
+  std::vector<int> out;
+  out.reserve(ids.size() / 4 + 16);
+  for (int id : ids) {
+    if (table[id] == -1) {
+      table[id] = 0;
+      out.push_back(id);
+    }
+  }
+  std::sort(out.begin(), out.end());
+  for (std::size_t i = 0; i < out.size(); ++i) table[out[i]] = static_cast<int>(i);
+  return out;
 }
 
 }  // namespace
 
-int RegionComplex::localVertex(int meshVertex) const { return indexIn(vertices, meshVertex); }
-int RegionComplex::localEdge(int meshEdge) const { return indexIn(edges, meshEdge); }
-int RegionComplex::localTet(int meshTet) const { return indexIn(tets, meshTet); }
+int RegionComplex::localVertex(int meshVertex) const { return lookup(vertexLocal, meshVertex); }
+int RegionComplex::localEdge(int meshEdge) const { return lookup(edgeLocal, meshEdge); }
+int RegionComplex::localTet(int meshTet) const { return lookup(tetLocal, meshTet); }
 
 int RegionComplex::components() const {
   const int n = static_cast<int>(vertices.size());
@@ -45,45 +63,50 @@ int RegionComplex::components() const {
 
 RegionComplex regionComplex(const TetMesh& mesh, const std::vector<int>& tets) {
   if (tets.empty()) throw Error("region: no tets");
+  for (int t : tets) {
+    if (t < 0 || t >= static_cast<int>(mesh.tetCount())) {
+      throw Error("region: tet id " + std::to_string(t) + " is not a tet of the mesh (" +
+                  std::to_string(mesh.tetCount()) + " tets)");
+    }
+  }
   RegionComplex r;
-  r.tets = tets;
-  std::sort(r.tets.begin(), r.tets.end());
-  r.tets.erase(std::unique(r.tets.begin(), r.tets.end()), r.tets.end());
-  if (r.tets.front() < 0 || r.tets.back() >= static_cast<int>(mesh.tetCount())) {
-    throw Error("region: tet id " +
-                std::to_string(r.tets.front() < 0 ? r.tets.front() : r.tets.back()) +
-                " is not a tet of the mesh (" + std::to_string(mesh.tetCount()) + " tets)");
-  }
-  r.vertices.reserve(r.tets.size() * 4);
-  r.edges.reserve(r.tets.size() * 6);
-  for (int t : r.tets) {
-    for (int v : mesh.tets()[t]) r.vertices.push_back(v);
-    for (int e : mesh.tetEdges()[t]) r.edges.push_back(e);
-  }
-  std::sort(r.vertices.begin(), r.vertices.end());
-  r.vertices.erase(std::unique(r.vertices.begin(), r.vertices.end()), r.vertices.end());
-  std::sort(r.edges.begin(), r.edges.end());
-  r.edges.erase(std::unique(r.edges.begin(), r.edges.end()), r.edges.end());
+  r.tets = uniqueAscending(tets, mesh.tetCount(), r.tetLocal);
+  std::vector<int> all;
+  all.reserve(r.tets.size() * 6);
+  for (int t : r.tets)
+    for (int v : mesh.tets()[t]) all.push_back(v);
+  r.vertices = uniqueAscending(all, mesh.vertexCount(), r.vertexLocal);
+  all.clear();
+  for (int t : r.tets)
+    for (int e : mesh.tetEdges()[t]) all.push_back(e);
+  r.edges = uniqueAscending(all, mesh.edges().size(), r.edgeLocal);
 
+  // CSR adjacency: count, place, then sort each vertex's (neighbour, edge) pairs.
   const int n = static_cast<int>(r.vertices.size());
-  std::vector<std::array<int, 3>> half;  // (local from, local to, local edge)
-  half.reserve(r.edges.size() * 2);
-  for (std::size_t e = 0; e < r.edges.size(); ++e) {
-    const auto& ends = mesh.edges()[r.edges[e]];
-    const int a = r.localVertex(ends[0]), b = r.localVertex(ends[1]);
-    half.push_back({a, b, static_cast<int>(e)});
-    half.push_back({b, a, static_cast<int>(e)});
-  }
-  std::sort(half.begin(), half.end());
   r.start.assign(n + 1, 0);
-  r.neighbour.reserve(half.size());
-  r.neighbourEdge.reserve(half.size());
-  for (const auto& h : half) {
-    ++r.start[h[0] + 1];
-    r.neighbour.push_back(h[1]);
-    r.neighbourEdge.push_back(h[2]);
+  for (int meshEdge : r.edges) {
+    const auto& ends = mesh.edges()[meshEdge];
+    ++r.start[r.vertexLocal[ends[0]] + 1];
+    ++r.start[r.vertexLocal[ends[1]] + 1];
   }
   for (int i = 0; i < n; ++i) r.start[i + 1] += r.start[i];
+  std::vector<std::pair<int, int>> half(r.start[n]);
+  std::vector<int> fill(r.start.begin(), r.start.end() - 1);
+  for (std::size_t e = 0; e < r.edges.size(); ++e) {
+    const auto& ends = mesh.edges()[r.edges[e]];
+    const int a = r.vertexLocal[ends[0]], b = r.vertexLocal[ends[1]];
+    half[fill[a]++] = {b, static_cast<int>(e)};
+    half[fill[b]++] = {a, static_cast<int>(e)};
+  }
+  r.neighbour.resize(half.size());
+  r.neighbourEdge.resize(half.size());
+  for (int i = 0; i < n; ++i) {
+    std::sort(half.begin() + r.start[i], half.begin() + r.start[i + 1]);
+    for (int k = r.start[i]; k < r.start[i + 1]; ++k) {
+      r.neighbour[k] = half[k].first;
+      r.neighbourEdge[k] = half[k].second;
+    }
+  }
   return r;
 }
 

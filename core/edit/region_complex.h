@@ -3,8 +3,10 @@
 // vertices and edges, numbered locally, with the vertex adjacency of the region's edges.
 //
 // Input: a mesh and tet ids (any order, repeats allowed). Output: ascending unique tets,
-// vertices and mesh edge ids; local indices are positions in those lists. Cost proportional to
-// the region, not the mesh. Deterministic (no parallelism: the lists are sorted).
+// vertices and mesh edge ids; local indices are positions in those lists. Lookups from mesh
+// ids to local ones are O(1) through tables of one int per mesh vertex, edge and tet (about
+// 10 MB at 1M tets, filled at memset speed); everything else costs in proportion to the region.
+// Deterministic (no parallelism: the lists are sorted).
 #include <vector>
 
 #include "core/tet_mesh.h"
@@ -24,6 +26,9 @@ struct RegionComplex {
   int localTet(int meshTet) const;        ///< −1 when not in the region
   /// Number of connected pieces of the vertex graph (0 for an empty region).
   int components() const;
+
+  /// Local index per mesh vertex / edge / tet (−1 outside); filled by regionComplex().
+  std::vector<int> vertexLocal, edgeLocal, tetLocal;
 };
 
 /// Throws core::Error when `tets` is empty or holds an id that is not a tet of `mesh`.

@@ -188,12 +188,12 @@ RemoveCurvesResult removeCurves(const TensorField& field, const RemoveCurvesOpti
       attempt.failedCheck = "region leaves a held boundary";
       attempt.detail = "the region grew to the whole mesh: nothing outside it holds the field";
     } else {
-      const VectorisedEigenvector vec = vectoriseEigenvector(field, region.tets, type);
+      const RegionComplex complex = regionComplex(mesh, region.tets);
+      const VectorisedEigenvector vec = vectoriseEigenvector(field, complex, type);
       report.flow = boundaryFlow(mesh, region.tets, vec);
       report.signConflicts = vec.signConflicts;
-      Progress inner = progress;
       try {
-        edited = singularityFreeField(field, region.tets, rv.held, type, inner);
+        edited = singularityFreeField(field, complex, vec, rv.held, type, progress, nullptr);
       } catch (const Cancelled&) {
         throw;
       } catch (const Error& e) {

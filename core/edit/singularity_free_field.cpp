@@ -86,7 +86,22 @@ TensorField singularityFreeField(const TensorField& field, const std::vector<int
   }
   progress.report(0, "orienting the non-repeating eigenvector");
   const RegionComplex region = regionComplex(mesh, regionTets);
-  const VectorisedEigenvector n = vectoriseEigenvector(field, region.tets, type);
+  return singularityFreeField(field, region, vectoriseEigenvector(field, region, type), held, type,
+                              progress, report);
+}
+
+TensorField singularityFreeField(const TensorField& field, const RegionComplex& region,
+                                 const VectorisedEigenvector& n, const std::vector<char>& held,
+                                 DegenerateType type, const Progress& progress,
+                                 SingularityFreeReport* report) {
+  const TetMesh& mesh = field.mesh();
+  if (held.size() != mesh.vertexCount()) {
+    throw Error("singularity-free field: `held` has " + std::to_string(held.size()) +
+                " entries for " + std::to_string(mesh.vertexCount()) + " mesh vertices");
+  }
+  if (n.vertices != region.vertices) {
+    throw Error("singularity-free field: the vectorised eigenvector is not of this region");
+  }
   const char* which = type == DegenerateType::Linear ? "major" : "minor";
   if (n.signConflicts > 0) {
     throw Error(std::string("singularity-free field: the ") + which +

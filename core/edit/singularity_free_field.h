@@ -34,6 +34,8 @@
 #include <vector>
 
 #include "core/degeneracy.h"
+#include "core/edit/region_complex.h"
+#include "core/edit/vectorise_eigenvector.h"
 #include "core/progress.h"
 #include "core/tensor_field.h"
 
@@ -68,5 +70,12 @@ TensorField singularityFreeField(const TensorField& field, const std::vector<int
 TensorField singularityFreeField(const TensorField& field, const std::vector<int>& regionTets,
                                  const std::vector<char>& held, DegenerateType type,
                                  const Progress& progress, SingularityFreeReport* report);
+/// Same, on the region complex and the vectorised non-repeating eigenvector of `type` already
+/// computed by the caller (`directions` of vectoriseEigenvector(field, region, type)): a
+/// removal builds both once for its report and for this step.
+TensorField singularityFreeField(const TensorField& field, const RegionComplex& region,
+                                 const VectorisedEigenvector& n, const std::vector<char>& held,
+                                 DegenerateType type, const Progress& progress,
+                                 SingularityFreeReport* report);
 
 }  // namespace tfd::core

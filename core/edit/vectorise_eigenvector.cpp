@@ -54,7 +54,11 @@ int nonRepeatingColumn(DegenerateType type) { return type == DegenerateType::Lin
 VectorisedEigenvector vectoriseEigenvector(const TensorField& field,
                                            const std::vector<int>& regionTets,
                                            DegenerateType type) {
-  const RegionComplex region = regionComplex(field.mesh(), regionTets);
+  return vectoriseEigenvector(field, regionComplex(field.mesh(), regionTets), type);
+}
+
+VectorisedEigenvector vectoriseEigenvector(const TensorField& field, const RegionComplex& region,
+                                           DegenerateType type) {
   const int pieces = region.components();
   if (pieces != 1) {
     throw Error("vectorise eigenvector: the region is not connected (" + std::to_string(pieces) +

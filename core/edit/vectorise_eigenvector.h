@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "core/degeneracy.h"
+#include "core/edit/region_complex.h"
 #include "core/tensor_field.h"
 
 namespace tfd::core {
@@ -43,5 +44,8 @@ int nonRepeatingColumn(DegenerateType type);
 /// are not connected through its edges.
 VectorisedEigenvector vectoriseEigenvector(const TensorField& field,
                                            const std::vector<int>& regionTets, DegenerateType type);
+/// The same on a region complex already built (core/edit/region_complex.h) of `field`'s mesh.
+VectorisedEigenvector vectoriseEigenvector(const TensorField& field, const RegionComplex& region,
+                                           DegenerateType type);
 
 }  // namespace tfd::core

@@ -117,7 +117,7 @@ TEST(VectoriseEigenvector, RefusesDisconnectedOrInvalidRegions) {
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("not connected"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(vectoriseEigenvector(field, {}, DegenerateType::Linear), Error);
+  EXPECT_THROW(vectoriseEigenvector(field, std::vector<int>{}, DegenerateType::Linear), Error);
   EXPECT_THROW(vectoriseEigenvector(field, {0, 24}, DegenerateType::Linear), Error);
 }
 
