@@ -8,21 +8,28 @@
 // Commands and figures: bench/RESULTS.md.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <fstream>
+#include <map>
 #include <random>
 #include <string>
 
 #include "core/design/propagate.h"
 #include "core/edit/remove_curves.h"
 #include "core/structured_mesh.h"
+#include "core/surface/primitives.h"
 #include "core/topology/extract_degenerate_curves.h"
+#include "io/mesh/surface_readers.h"
+#include "io/tetgen/tetgen_mesher.h"
 #include "tests/core/design/curve_test_meshes.h"
 #include "tests/core/edit/removal_test_fields.h"
 
 namespace {
 
 using namespace tfd::core;
+namespace io = tfd::io;
 
 double peakMegabytes() {
   std::ifstream status("/proc/self/status");
@@ -101,18 +108,67 @@ TensorField randomDesign(std::shared_ptr<const TetMesh> mesh, std::mt19937& rng,
   return propagate(std::move(mesh), set, po).field;
 }
 
+/// The solids of RandomRemovals: three made here and two tetrahedralised by TetGen, one of
+/// them from a surface file (examples/pebble.obj) and one of genus 2.
+std::vector<std::pair<std::string, std::shared_ptr<const TetMesh>>> randomSolids() {
+  io::TetgenOptions to;
+  to.targetTets = 25'000;
+  to.source = "examples/pebble.obj";
+  const auto pebble =
+      io::tetrahedralize(io::readObj(std::string(TFD_SOURCE_DIR) + "/examples/pebble.obj"), to);
+  PrimitiveSpec twoHoles;
+  twoHoles.shape = PrimitiveShape::DoubleTorus;
+  return {{"box", testing::jitteredBox(14, 0.15)},
+          {"ball", testing::carvedBall(18)},
+          {"torus", testing::keepTets(*testing::jitteredBox(20, 0.15),
+                                      [](const Vec3& c) {
+                                        return std::hypot(std::hypot(c.x(), c.y()) - 0.6, c.z()) <
+                                               0.33;
+                                      })},
+          {"pebble.obj", pebble},
+          {"double torus", io::meshPrimitive(twoHoles, 25'000)}};
+}
+
+/// Targets whose scenario applies: each curve alone (one-curve, one-loop) and each pair of an
+/// open pure wedge and an open pure trisector curve of the same type (two-curve). Each target
+/// is picked at the middle point of its curves.
+std::vector<std::vector<const DegenerateCurve*>> removableTargets(const DegenerateCurves& curves) {
+  std::vector<std::vector<const DegenerateCurve*>> out;
+  const auto& all = curves.curves();
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    for (std::size_t j = i; j < all.size(); ++j) {
+      std::vector<const DegenerateCurve*> t{&all[i]};
+      if (j != i) t.push_back(&all[j]);
+      try {
+        removalScenario(t);
+        out.push_back(std::move(t));
+      } catch (const RemovalRefused&) {
+      }
+    }
+  }
+  return out;
+}
+
+struct Tally {
+  int attempts = 0, successes = 0, refusals = 0, failures = 0;
+  void add(const Tally& o) {
+    attempts += o.attempts, successes += o.successes;
+    refusals += o.refusals, failures += o.failures;
+  }
+};
+
 void RandomRemovals(benchmark::State& state) {
-  const std::vector<std::pair<const char*, std::shared_ptr<const TetMesh>>> solids = {
-      {"box", testing::jitteredBox(14, 0.15)},
-      {"ball", testing::carvedBall(18)},
-      {"torus", testing::keepTets(*testing::jitteredBox(20, 0.15), [](const Vec3& c) {
-         return std::hypot(std::hypot(c.x(), c.y()) - 0.6, c.z()) < 0.33;
-       })}};
-  int attempts = 0, successes = 0, refusals = 0, failures = 0, fields = 0;
+  const auto solids = randomSolids();
+  Tally total;
+  std::map<std::string, Tally> bySolid, byScenario, bySource;
   std::map<std::string, int> failedChecks;
+  int fields = 0;
   for (auto _ : state) {
     std::mt19937 rng(11);
-    while (attempts < 100 && fields < 400) {
+    // Until `wanted` attempts found a region (success or failure), within bounds.
+    const int wanted = int(state.range(0));
+    while (total.successes + total.failures < wanted && total.attempts < 10 * wanted &&
+           fields < 40 * wanted) {
       const auto& [name, mesh] = solids[fields % solids.size()];
       const bool curvature = fields % 4 == 3;
       ++fields;
@@ -124,42 +180,52 @@ void RandomRemovals(benchmark::State& state) {
         }
       }();
       const DegenerateCurves curves = extractDegenerateCurves(field);
-      int tried = 0;
-      for (const DegenerateCurve& c : curves.curves()) {
-        if (tried >= 3 || attempts >= 100) break;
-        const DegenerateCurve* one[] = {&c};
-        try {
-          removalScenario(one);
-        } catch (const RemovalRefused&) {
-          continue;  // no scenario for this curve alone
-        }
-        ++tried, ++attempts;
+      auto targets = removableTargets(curves);
+      std::shuffle(targets.begin(), targets.end(), rng);
+      if (targets.size() > 3) targets.resize(3);
+      for (const auto& target : targets) {
+        if (total.successes + total.failures >= wanted) break;
+        Tally one;
+        one.attempts = 1;
         RemoveCurvesOptions o;
-        o.picks = {c.points[c.points.size() / 2]};
+        for (const DegenerateCurve* c : target) o.picks.push_back(c->points[c->points.size() / 2]);
+        const std::string scenario = toString(removalScenario(target));
         try {
           removeCurves(field, o);
-          ++successes;
+          one.successes = 1;
         } catch (const RemovalRefused&) {
-          ++refusals;
+          one.refusals = 1;
         } catch (const RemovalFailed& e) {
-          ++failures;
+          one.failures = 1;
           const std::string m = e.what();
           const auto a = m.find("check '"), b = m.find("'", a + 7);
           ++failedChecks[m.substr(a + 7, b - a - 7)];
+          std::fprintf(stderr, "FAILED (field %d, %s, %s, %s): %s\n", fields, name.c_str(),
+                       curvature ? "curvature" : "random constraints", scenario.c_str(), e.what());
         }
+        total.add(one), bySolid[name].add(one), byScenario[scenario].add(one);
+        bySource[curvature ? "curvature" : "random constraints"].add(one);
       }
     }
   }
+  std::fprintf(stderr, "%-20s %8s %9s %8s %8s\n", "", "attempts", "successes", "refusals",
+               "failures");
+  for (const auto* table : {&bySolid, &byScenario, &bySource})
+    for (const auto& [key, t] : *table)
+      std::fprintf(stderr, "%-20s %8d %9d %8d %8d\n", key.c_str(), t.attempts, t.successes,
+                   t.refusals, t.failures);
   state.counters["fields"] = fields;
-  state.counters["attempts"] = attempts;
-  state.counters["successes"] = successes;
-  state.counters["refusals"] = refusals;
-  state.counters["failures"] = failures;
+  state.counters["attempts"] = total.attempts;
+  state.counters["successes"] = total.successes;
+  state.counters["refusals"] = total.refusals;
+  state.counters["failures"] = total.failures;
   state.counters["success_of_possible"] =
-      successes + failures > 0 ? double(successes) / (successes + failures) : 0;
+      total.successes + total.failures > 0
+          ? double(total.successes) / (total.successes + total.failures)
+          : 0;
   for (const auto& [check, n] : failedChecks) state.counters["failed:" + check] = n;
 }
-BENCHMARK(RandomRemovals)->Iterations(1)->Unit(benchmark::kSecond);
+BENCHMARK(RandomRemovals)->Arg(100)->Iterations(1)->Unit(benchmark::kSecond);
 
 }  // namespace
 
