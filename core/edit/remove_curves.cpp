@@ -19,6 +19,9 @@
 namespace tfd::core {
 namespace {
 
+/// Regrowths of one try around sign conflicts before the conflict is left to fail the try.
+constexpr int kConflictRegrowths = 8;
+
 std::string number(double x) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.3g", x);
@@ -93,7 +96,24 @@ std::vector<int> seedTets(const TetMesh& mesh, const Targets& targets) {
   return seeds;
 }
 
-[[noreturn]] void refuseCut(const DegenerateCurves& all, const Targets& targets, int owner) {
+/// Owner code of tets forbidden around a sign-conflict edge: −2 − edge id (curves are ≥ 0).
+int conflictOwner(int edge) { return -2 - edge; }
+
+[[noreturn]] void refuseCut(const TetMesh& mesh, const DegenerateCurves& all,
+                            const Targets& targets, DegenerateType type, int owner) {
+  if (owner <= -2) {
+    const auto& ends = mesh.edges()[-2 - owner];
+    const Vec3 at = 0.5 * (mesh.positions()[ends[0]] + mesh.positions()[ends[1]]);
+    std::string names;
+    for (const DegenerateCurve* c : targets.curves)
+      names += (names.empty() ? "" : " and ") + describeCurve(*c);
+    throw RemovalRefused(
+        "no ball region around " + names + " avoids the place near (" + number(at.x()) + ", " +
+        number(at.y()) + ", " + number(at.z()) + ") where the " +
+        (type == DegenerateType::Linear ? "major" : "minor") +
+        " eigenvector cannot be oriented (a degenerate point of the other type that the mesh "
+        "does not resolve into a curve)");
+  }
   const DegenerateCurve& other = all.curve(owner);
   double d = std::numeric_limits<double>::infinity();
   std::string names;
@@ -120,7 +140,11 @@ std::vector<std::string> RemoveCurvesReport::lines() const {
                 std::to_string(surfaceFaces) + " boundary faces on it)");
   out.push_back("region growth: " + growStop + "; shrink: " + shrinkStop +
                 "; grow out: " + growOutStop);
-  out.push_back(flow.summary() + "; " + std::to_string(signConflicts) + " sign conflicts");
+  std::string flowLine = flow.summary() + "; " + std::to_string(signConflicts) + " sign conflicts";
+  if (conflictRegrowths > 0)
+    flowLine += " (region grown again " + std::to_string(conflictRegrowths) + " times around " +
+                std::to_string(conflictEdges) + " conflicting edges)";
+  out.push_back(flowLine);
   std::string t = "tries: " + std::to_string(tries.size());
   for (std::size_t i = 0; i < tries.size(); ++i) {
     t +=
@@ -165,7 +189,7 @@ RemoveCurvesResult removeCurves(const TensorField& field, const RemoveCurvesOpti
   }
   const std::vector<int> seeds = seedTets(mesh, targets);
   for (int s : seeds)
-    if (forbidden[s]) refuseCut(all, targets, owner[s]);
+    if (forbidden[s]) refuseCut(mesh, all, targets, type, owner[s]);
 
   const double radius = 0.5 * (mesh.boundsMax() - mesh.boundsMin()).norm();
   const double distance0 = o.regionDistance < 0 ? 0.3 * radius : o.regionDistance;
@@ -175,7 +199,7 @@ RemoveCurvesResult removeCurves(const TensorField& field, const RemoveCurvesOpti
     progress.report(0.1 + 0.8 * k / (o.retries + 1), "growing the region");
     const BallRegion region = growBallRegion(mesh, seeds, forbidden, {attempt.distance}, progress);
     if (!region.complete) {
-      if (region.blockingTet >= 0) refuseCut(all, targets, owner[region.blockingTet]);
+      if (region.blockingTet >= 0) refuseCut(mesh, all, targets, type, owner[region.blockingTet]);
       throw RemovalRefused("no ball region around the targets: " + region.growStop);
     }
     attempt.regionTets = region.tets.size();
@@ -190,6 +214,22 @@ RemoveCurvesResult removeCurves(const TensorField& field, const RemoveCurvesOpti
     } else {
       const RegionComplex complex = regionComplex(mesh, region.tets);
       const VectorisedEigenvector vec = vectoriseEigenvector(field, complex, type);
+      if (vec.signConflicts > 0 && report.conflictRegrowths < kConflictRegrowths) {
+        // §6.1: the region holds no degenerate point but the targets'. A sign conflict marks
+        // one of the other type (where the non-repeating eigenvector repeats) that no extracted
+        // curve covers: the tets around the conflicting edges are forbidden like another
+        // curve's, and this try grows its region again.
+        for (int e : vec.conflictEdges)
+          for (int v : mesh.edges()[e])
+            for (int n : mesh.vertexTets(v))
+              if (!forbidden[n]) forbidden[n] = 1, owner[n] = conflictOwner(e);
+        for (int s : seeds)
+          if (forbidden[s]) refuseCut(mesh, all, targets, type, owner[s]);
+        ++report.conflictRegrowths;
+        report.conflictEdges += vec.signConflicts;
+        --k;
+        continue;
+      }
       report.flow = boundaryFlow(mesh, region.tets, vec);
       report.signConflicts = vec.signConflicts;
       try {

@@ -8,7 +8,11 @@
 // vertices); grow a ball region (core/region/ball_region.h) out to `regionDistance`; check it
 // independently (core/region/ball_check.h); split its vertices into held and free
 // (core/region/region_vertices.h); vectorise the non-repeating eigenvector and report the
-// incoming / outgoing split (boundary_flow.h); compute the singularity-free field of §6.3
+// incoming / outgoing split (boundary_flow.h) — when the eigenvector cannot be oriented (sign
+// conflicts: a degenerate point of the other type that no extracted curve covers, typically
+// under-resolved next to the domain surface), forbid the tets around the conflicting edges and
+// grow the region again (at most 8 times a try; a seed among them refuses the removal, naming
+// the place); compute the singularity-free field of §6.3
 // (singularity_free_field.h); re-extract with the same settings and verify
 // (edit_verification.h). On a failed verification retry with the distance grown by
 // `growFactor`, at most `retries` times. Curves cannot end inside the volume, so a region holds
@@ -59,6 +63,9 @@ struct RemoveCurvesReport {
   std::string growStop, shrinkStop, growOutStop;
   BoundaryFlow flow;
   int signConflicts = 0;
+  /// Regrowths of the region away from sign conflicts of the non-repeating eigenvector (places
+  /// where it repeats that no extracted curve covers), and the conflicting edges avoided.
+  int conflictRegrowths = 0, conflictEdges = 0;
   std::vector<RemovalTry> tries;
   double seconds = 0;
   std::size_t curvesBefore = 0, curvesAfter = 0;

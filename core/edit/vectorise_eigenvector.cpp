@@ -88,7 +88,10 @@ VectorisedEigenvector vectoriseEigenvector(const TensorField& field, const Regio
   for (std::size_t e = 0; e < region.edges.size(); ++e) {
     const auto& ends = field.mesh().edges()[region.edges[e]];
     const int a = region.localVertex(ends[0]), b = region.localVertex(ends[1]);
-    if (dirs[a].dot(dirs[b]) < 0) ++out.signConflicts;
+    if (dirs[a].dot(dirs[b]) < 0) {
+      ++out.signConflicts;
+      out.conflictEdges.push_back(region.edges[e]);
+    }
   }
   out.seed = region.vertices[seed];
   out.vertices = region.vertices;

@@ -34,6 +34,12 @@ struct VectorisedEigenvector {
   int signConflicts = 0;         ///< region edges whose two directions disagree in sign (0 when the
                                  ///< region holds no degenerate point)
   int seed = -1;                 ///< mesh id of the seed vertex
+  /// Mesh ids of the edges counted in signConflicts, ascending. A region loop whose signs
+  /// cannot agree encircles a point where this eigenvector repeats; these edges form the cut
+  /// where the tree's signs flip, which runs from that point (a degenerate point of the other
+  /// type, extracted as a curve or too small for the mesh to resolve) along the least aligned
+  /// edges, so it starts next to it.
+  std::vector<int> conflictEdges;
 };
 
 /// Column of EigenDecomposition::vectors that does not repeat at a degenerate point of `type`

@@ -1,6 +1,9 @@
 // Vectorising the non-repeating eigenvector in a region (core/edit/vectorise_eigenvector.h).
 #include <gtest/gtest.h>
+
 #include <tbb/global_control.h>
+#include <algorithm>
+#include <cmath>
 
 #include <Eigen/Geometry>
 #include <cmath>
@@ -92,8 +95,24 @@ TEST(VectoriseEigenvector, RegionAroundADegenerateCurveHasConflictsOnlyForTheRep
   const std::vector<int> region = tetsNearZAxis(*mesh, 0.7);
   const VectorisedEigenvector major = vectoriseEigenvector(field, region, DegenerateType::Linear);
   EXPECT_GT(major.signConflicts, 0) << "the major eigenvector cannot be oriented around a wedge";
+  // The conflicting edges are listed and disagree in sign; they form the cut where the tree's
+  // signs flip, which reaches the curve x = y = 0 (the removal forbids the tets around them).
+  ASSERT_EQ(major.conflictEdges.size(), std::size_t(major.signConflicts));
+  double nearest = 1e9;
+  for (int e : major.conflictEdges) {
+    const auto& ends = mesh->edges()[e];
+    const auto at = [&](int v) {
+      return major.directions[std::lower_bound(major.vertices.begin(), major.vertices.end(), v) -
+                              major.vertices.begin()];
+    };
+    EXPECT_LT(at(ends[0]).dot(at(ends[1])), 0);
+    const Vec3 mid = 0.5 * (mesh->positions()[ends[0]] + mesh->positions()[ends[1]]);
+    nearest = std::min(nearest, std::hypot(mid.x(), mid.y()));
+  }
+  EXPECT_LT(nearest, 0.2 * std::sqrt(2.0)) << "the cut reaches the cell of the curve";
   const VectorisedEigenvector minor = vectoriseEigenvector(field, region, DegenerateType::Planar);
   EXPECT_EQ(minor.signConflicts, 0) << "the non-repeating (minor) eigenvector can";
+  EXPECT_TRUE(minor.conflictEdges.empty());
   for (const Vec3& d : minor.directions) EXPECT_GT(std::abs(d.z()), 1 - 1e-12);
   // A region beside the curve, not around it: the major eigenvector orients fine there.
   std::vector<int> beside;
