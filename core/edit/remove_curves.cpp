@@ -125,6 +125,40 @@ int conflictOwner(int edge) { return -2 - edge; }
                        number(d) + " away: the region would have to cut it");
 }
 
+/// Forbids one more ring of tets (every tet around a vertex of a forbidden tet not caused by
+/// a sign conflict) around the other curves, unless that would take a seed: returns whether
+/// it did.
+bool widenAroundCurves(const TetMesh& mesh, const std::vector<int>& seeds,
+                       std::vector<unsigned char>& forbidden, std::vector<int>& owner) {
+  std::vector<std::pair<int, int>> added;  // (tet, owner)
+  for (std::size_t t = 0; t < mesh.tetCount(); ++t) {
+    if (!forbidden[t] || owner[t] < 0) continue;
+    for (int v : mesh.tets()[t])
+      for (int n : mesh.vertexTets(v))
+        if (!forbidden[n]) added.emplace_back(n, owner[t]);
+  }
+  std::vector<unsigned char> isSeed(mesh.tetCount(), 0);
+  for (int s : seeds) isSeed[s] = 1;
+  for (const auto& [t, o] : added)
+    if (isSeed[t]) return false;
+  for (const auto& [t, o] : added)
+    if (!forbidden[t]) forbidden[t] = 1, owner[t] = o;
+  return true;
+}
+
+/// The removal's final error after every try failed its verification.
+[[noreturn]] void failAfterTries(const std::vector<RemovalTry>& tries) {
+  const RemovalTry& last = tries.back();
+  std::string earlier;
+  for (std::size_t i = 0; i + 1 < tries.size(); ++i)
+    earlier += "; try " + std::to_string(i + 1) + " (" + std::to_string(tries[i].regionTets) +
+               " tets): " + tries[i].failedCheck + " (" + tries[i].detail + ")";
+  throw RemovalFailed("verification failed after " + std::to_string(tries.size()) +
+                      " tries: check '" + last.failedCheck + "' failed (" + last.detail +
+                      "); last region " + std::to_string(last.regionTets) + " tets (distance " +
+                      number(last.distance) + ")" + earlier);
+}
+
 }  // namespace
 
 std::vector<std::string> RemoveCurvesReport::lines() const {
@@ -146,6 +180,8 @@ std::vector<std::string> RemoveCurvesReport::lines() const {
                 std::to_string(conflictEdges) + " conflicting edges)";
   out.push_back(flowLine);
   std::string t = "tries: " + std::to_string(tries.size());
+  if (widenings > 0)
+    t += " (" + std::to_string(widenings) + " with one more ring of tets kept from other curves)";
   for (std::size_t i = 0; i < tries.size(); ++i) {
     t +=
         "; #" + std::to_string(i + 1) + " distance " + number(tries[i].distance) + ", " +
@@ -196,6 +232,15 @@ RemoveCurvesResult removeCurves(const TensorField& field, const RemoveCurvesOpti
   for (int k = 0; k <= o.retries; ++k) {
     RemovalTry attempt;
     attempt.distance = distance0 * std::pow(o.growFactor, k);
+    // After a failed re-extraction (a new curve or a piece of a target in the region), the
+    // retry also keeps one more ring of tets away from the other curves: next to them the held
+    // eigenvalue gaps are small and the new field turns fast across the tets there, where the
+    // linear interpolation of a face can hold a degenerate point although every vertex has
+    // positive gaps.
+    if (k > 0 && (report.tries.back().failedCheck == "nothing new in the region" ||
+                  report.tries.back().failedCheck == "targets gone")) {
+      if (widenAroundCurves(mesh, seeds, forbidden, owner)) ++report.widenings;
+    }
     progress.report(0.1 + 0.8 * k / (o.retries + 1), "growing the region");
     const BallRegion region = growBallRegion(mesh, seeds, forbidden, {attempt.distance}, progress);
     if (!region.complete) {
@@ -265,16 +310,7 @@ RemoveCurvesResult removeCurves(const TensorField& field, const RemoveCurvesOpti
     report.tries.push_back(attempt);
     if (k > 0 && report.tries[k - 1].regionTets == attempt.regionTets) break;  // cannot grow
   }
-  const RemovalTry& last = report.tries.back();
-  std::string earlier;
-  for (std::size_t i = 0; i + 1 < report.tries.size(); ++i)
-    earlier += "; try " + std::to_string(i + 1) + " (" +
-               std::to_string(report.tries[i].regionTets) +
-               " tets): " + report.tries[i].failedCheck + " (" + report.tries[i].detail + ")";
-  throw RemovalFailed("verification failed after " + std::to_string(report.tries.size()) +
-                      " tries: check '" + last.failedCheck + "' failed (" + last.detail +
-                      "); last region " + std::to_string(last.regionTets) + " tets (distance " +
-                      number(last.distance) + ")" + earlier);
+  failAfterTries(report.tries);
 }
 
 }  // namespace tfd::core

@@ -15,7 +15,9 @@
 // the place); compute the singularity-free field of §6.3
 // (singularity_free_field.h); re-extract with the same settings and verify
 // (edit_verification.h). On a failed verification retry with the distance grown by
-// `growFactor`, at most `retries` times. Curves cannot end inside the volume, so a region holds
+// `growFactor`, at most `retries` times; after a new curve or a piece of a target appeared,
+// the retry also keeps one more ring of tets from the other curves (unless that ring would
+// take a target's tet). Curves cannot end inside the volume, so a region holds
 // a loop entirely and an open curve with its ends on the domain surface; when the ball would
 // have to cut another curve the removal is refused, naming that curve and how far it is.
 #include <string>
@@ -66,6 +68,9 @@ struct RemoveCurvesReport {
   /// Regrowths of the region away from sign conflicts of the non-repeating eigenvector (places
   /// where it repeats that no extracted curve covers), and the conflicting edges avoided.
   int conflictRegrowths = 0, conflictEdges = 0;
+  /// Retries that kept one more ring of tets away from the other curves (after a new curve or
+  /// a piece of a target appeared in the region).
+  int widenings = 0;
   std::vector<RemovalTry> tries;
   double seconds = 0;
   std::size_t curvesBefore = 0, curvesAfter = 0;
