@@ -125,6 +125,41 @@ TEST(DeformCurve, BendsOneOfTwoCurvesAndLeavesTheOtherAlone) {
   EXPECT_GT(leftmost, -0.55 - mesh->meanEdgeLength());
 }
 
+TEST(DeformCurve, MovesAnArcOfALoopOnEitherSideOfItsFirstPoint) {
+  // The mixed loop x² + z² = 0.4², y = 0 starts near (−0.4, 0, 0) (canonical order), so the
+  // arc there wraps around the loop's first point and the arc at (0.4, 0, 0) does not.
+  const auto mesh = box();
+  const TensorField field =
+      testing::designedField(mesh, [](const Vec3& p) { return testing::loopW(p); });
+  const DegenerateCurves before = extractDegenerateCurves(field);
+  ASSERT_EQ(before.size(), 1u);
+  for (const double side : {1.0, -1.0}) {
+    SCOPED_TRACE(side);
+    DeformCurveOptions o;
+    o.pick = Vec3(0.4 * side, 0, 0);
+    for (int i = 0; i <= 8; ++i) {  // from angle −35° to 35° around the pick, out to 0.58
+      const double a = (-35 + 70.0 * i / 8) * std::numbers::pi / 180;
+      const double r = 0.4 + 0.18 * std::pow(std::cos(a * 90 / 35), 2);
+      o.target.push_back(Vec3(side * r * std::cos(a), 0, r * std::sin(a)));
+    }
+    o.regionDistance = 0.25;
+    const DeformCurveResult r = deformCurve(field, o);
+    ASSERT_EQ(r.curves.size(), 1u) << r.curves.summary();
+    const DegenerateCurve& c = r.curves.curve(0);
+    EXPECT_TRUE(c.closed);
+    double outermost = 0;
+    for (const Vec3& p : c.points) outermost = std::max(outermost, side * p.x());
+    EXPECT_NEAR(outermost, 0.58, mesh->meanEdgeLength());
+    // The other side of the loop did not move: its points are the old ones.
+    for (const Vec3& p : c.points) {
+      if (side * p.x() > -0.2) continue;
+      double nearest = 1;
+      for (const Vec3& q : before.curve(0).points) nearest = std::min(nearest, (p - q).norm());
+      EXPECT_LE(nearest, 1e-12) << p.transpose();
+    }
+  }
+}
+
 TEST(DeformCurve, ReportsFoldOversOnAnExtremeTargetAndFailsThatTry) {
   const auto mesh = box();
   const TensorField field = testing::designedField(mesh, zAxis);
