@@ -13,6 +13,7 @@
 #include "core/edit/removal_scenario.h"
 #include "core/region/ball_check.h"
 #include "core/region/ball_region.h"
+#include "core/region/curve_tube.h"
 #include "core/region/region_vertices.h"
 #include "core/topology/curve_tets.h"
 
@@ -144,7 +145,9 @@ DeformCurveResult deformCurve(const TensorField& field, const DeformCurveOptions
   report.samples = int(paths.gamma2.size());
   report.curvesBefore = all.size();
 
-  // γ1's tets (the moving points' sources) and γ2's (the envelope), walked from the curve.
+  // γ1's tets (the moving points' sources) and γ2's (the minimal envelope), walked from the
+  // curve; the envelope's vertices and every vertex within D + h of γ2 (the thick envelope,
+  // deformation_map.h) are held by φ, so the seeds are the tets around all of them.
   std::vector<int> curveTets;
   std::vector<char> anchor(mesh.vertexCount(), 0);
   for (std::size_t i = 0; i < curve.points.size(); ++i)
@@ -159,7 +162,18 @@ DeformCurveResult deformCurve(const TensorField& field, const DeformCurveOptions
   std::vector<int> g1 = polylineTets(mesh, paths.gamma1, startTet, 0.125 * h);
   curveTets.insert(curveTets.end(), g1.begin(), g1.end());
   curveTets.insert(curveTets.end(), envelope.begin(), envelope.end());
-  const std::vector<int> seeds = withNeighbours(mesh, curveTets);
+  double displacement = 0;
+  for (std::size_t i = 0; i < paths.gamma1.size(); ++i)
+    displacement = std::max(displacement, (paths.gamma1[i] - paths.gamma2[i]).norm());
+  std::vector<char> held(mesh.vertexCount(), 0);
+  for (const TubeVertex& v : findTubeVertices(mesh, paths.target, false, displacement + h).vertices)
+    held[v.vertex] = 1;
+  std::vector<int> seeds = withNeighbours(mesh, curveTets);
+  for (int v = 0; v < int(mesh.vertexCount()); ++v)
+    if (held[v])
+      for (int t : mesh.vertexTets(v)) seeds.push_back(t);
+  std::sort(seeds.begin(), seeds.end());
+  seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
 
   std::vector<unsigned char> forbidden(mesh.tetCount(), 0);
   std::vector<int> owner(mesh.tetCount(), -1);
@@ -193,7 +207,7 @@ DeformCurveResult deformCurve(const TensorField& field, const DeformCurveOptions
     if (!ball.ball) {
       attempt.failedCheck = "region is a ball", attempt.detail = ball.problem;
     } else {
-      map = deformField(field, region.tets, rv, envelope, anchor, paths.gamma1, paths.gamma2,
+      map = deformField(field, region.tets, rv, envelope, held, anchor, paths.gamma1, paths.gamma2,
                         progress);
       attempt.foldOvers = map->foldOvers, attempt.foldOversOnCurve = map->foldOversOnCurve;
       if (map->foldOversOnCurve > 0)

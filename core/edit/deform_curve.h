@@ -4,14 +4,16 @@
 // Steps: extract the field's curves; name the curve by the picked point; γ1 and γ2 from the
 // target (deform_paths.h: the target's ends, projected onto the curve, bound the segment γ1
 // that moves); forbid every tet holding a point of another curve (and the tets around their
-// vertices, as for removal); seed with the tets holding γ1 and γ2 and every tet around their
-// vertices; grow a ball region (core/region/ball_region.h) out to `regionDistance` and check it
-// independently; build φ and the deformed field (deformation_map.h); a fold-over on a tet
-// holding γ2 fails the try. Verification: every vertex outside the region's free vertices keeps
-// its tensor bitwise and every other curve is unchanged (edit_verification.h, checks 1–2);
-// inside, exactly one curve, which follows the new course (γ2, and the rest of the curve
-// where it passes through the region) within the mean edge length of the region (Hausdorff
-// distance over the region). A failed try retries with the distance grown by `growFactor`.
+// vertices, as for removal); seed with the tets holding γ1 and γ2, every tet around their
+// vertices and every tet around a vertex of the thick envelope (within D + h of γ2,
+// deformation_map.h), so that all the vertices φ holds are inside the region; grow a ball region
+// (core/region/ball_region.h) out to `regionDistance` and check it independently; build φ and the
+// deformed field (deformation_map.h); a fold-over on a tet holding γ2 fails the try. Verification:
+// every vertex outside the region's free vertices keeps its tensor bitwise and every other curve is
+// unchanged (edit_verification.h, checks 1–2); inside, exactly one curve, which follows the new
+// course (γ2, and the rest of the curve where it passes through the region) within the mean edge
+// length of the region (Hausdorff distance over the region). A failed try retries with the distance
+// grown by `growFactor`.
 #include <string>
 #include <vector>
 

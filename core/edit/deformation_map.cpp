@@ -80,8 +80,9 @@ std::vector<int> polylineTets(const TetMesh& mesh, std::span<const Vec3> poly, i
 
 DeformedField deformField(const TensorField& field, std::span<const int> regionTets,
                           const RegionVertices& rv, std::span<const int> envelopeTets,
-                          const std::vector<char>& anchor, std::span<const Vec3> gamma1,
-                          std::span<const Vec3> gamma2, const Progress& progress) {
+                          const std::vector<char>& thick, const std::vector<char>& anchor,
+                          std::span<const Vec3> gamma1, std::span<const Vec3> gamma2,
+                          const Progress& progress) {
   const TetMesh& mesh = field.mesh();
   const auto& pos = mesh.positions();
   DeformedField r;
@@ -98,6 +99,10 @@ DeformedField deformField(const TensorField& field, std::span<const int> regionT
   for (int v : rv.free) {
     if (role[v] == Envelope) continue;
     if (anchor[v] || mesh.isBoundaryVertex(v)) continue;  // held at the identity
+    if (thick[v]) {
+      role[v] = Envelope;
+      continue;
+    }
     role[v] = Solved;
     solveSet.push_back(v);
   }

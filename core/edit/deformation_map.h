@@ -4,11 +4,19 @@
 //
 // φ is a self-map of the region M that takes the new course γ2 to the original segment γ1
 // (it assigns each vertex its pre-deformation location):
-//  - envelope: every vertex v of a tet holding part of γ2 is held at φ(v) = q + (v − p), p the
-//    point of γ2 closest to v and q the corresponding point of γ1 (γ1 and γ2 are sampled with
-//    the same number of points; between samples the correspondence is linear);
+//  - envelope: every vertex v of a tet holding part of γ2 (the paper's minimal envelope) is held
+//    at φ(v) = q + (v − p), p the point of γ2 closest to v and q the corresponding point of γ1
+//    (γ1 and γ2 are sampled with the same number of points; between samples the
+//    correspondence is linear);
+//  - thick envelope (our addition): so is every vertex within D + h of γ2 (D the largest
+//    distance between corresponding samples, h the mean edge length). With the minimal
+//    envelope alone, a displacement of several edge lengths leaves the old course γ1 outside
+//    the held tube, where the harmonic map is nearly the identity, so φ(γ1) ≈ γ1 and the old
+//    curve survives next to the new one (measured on the 1M-tet box: two curves, or the curve
+//    0.25 away from a 0.3 bump). The thick envelope holds γ1 too, mapped away from itself;
 //  - identity on the boundary of M (vertices on a tet outside M, and M's part of the domain
-//    surface) and on the tets holding the rest of the edited curve (so it does not move);
+//    surface) and on the tets holding the rest of the edited curve (so it does not move; the
+//    minimal envelope wins over it at the joints, it wins over the thick envelope);
 //  - every other vertex of M: the harmonic extension, Equation (1) on the three coordinates
 //    (core/solve/harmonic_solver.h, the P1 cotangent Laplacian).
 // The new tensor of each vertex that φ moves is the old field at φ(v) (barycentric in the old
@@ -45,11 +53,13 @@ std::vector<int> polylineTets(const TetMesh& mesh, std::span<const Vec3> polylin
 int walkToPoint(const TetMesh& mesh, int startTet, const Vec3& p, Eigen::Vector4d& bary);
 
 /// `regionTets` ascending, `rv` their vertices, `envelopeTets` the tets holding γ2 (all in the
-/// region), `anchor` one flag per mesh vertex held at the identity (the rest of the curve),
+/// region), `thick` one flag per mesh vertex of the thick envelope (interior to the region),
+/// `anchor` one flag per mesh vertex held at the identity (the rest of the curve),
 /// `gamma1`/`gamma2` the resampled curves (same size). Throws core::Error when the solve fails.
 DeformedField deformField(const TensorField& field, std::span<const int> regionTets,
                           const RegionVertices& rv, std::span<const int> envelopeTets,
-                          const std::vector<char>& anchor, std::span<const Vec3> gamma1,
-                          std::span<const Vec3> gamma2, const Progress& progress = {});
+                          const std::vector<char>& thick, const std::vector<char>& anchor,
+                          std::span<const Vec3> gamma1, std::span<const Vec3> gamma2,
+                          const Progress& progress = {});
 
 }  // namespace tfd::core
