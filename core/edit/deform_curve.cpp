@@ -232,6 +232,10 @@ DeformCurveResult deformCurve(const TensorField& field, const DeformCurveOptions
       if (v.passed && inside != 1) {
         attempt.failedCheck = "one curve in the region";
         attempt.detail = std::to_string(inside) + " curves pass through the region";
+      } else if (v.passed && moved->type != curve.type) {
+        attempt.failedCheck = "one curve in the region";
+        attempt.detail = "the curve in the region is " + describeCurve(*moved) + ", not of type " +
+                         std::string(toString(curve.type));
       } else if (v.passed) {
         attempt.hausdorff = courseDistance(mesh, *moved, paths, tetFlags(mesh, region.tets));
         if (!(attempt.hausdorff <= tolerance))

@@ -60,7 +60,6 @@ TEST(DeformCurve, BendsAStraightCurveOntoTheTarget) {
   o.pick = Vec3(0.01, 0, 0.1);
   o.target = bump(0.3);
   const DeformCurveResult r = deformCurve(field, o);
-  for (const std::string& line : r.report.lines()) std::printf("%s\n", line.c_str());
   ASSERT_EQ(r.curves.size(), 1u) << r.curves.summary();
   ASSERT_FALSE(r.report.tries.empty());
   EXPECT_TRUE(r.report.tries.back().failedCheck.empty());
@@ -100,6 +99,12 @@ TEST(DeformCurve, BendsAStraightCurveOntoTheTarget) {
   EXPECT_GT(changed, 0);
   EXPECT_EQ(extractDegenerateCurves(r.field).size(), 1u);
   EXPECT_NE(r.report.lines().back().find("1 curves -> 1"), std::string::npos);
+  EXPECT_EQ(c.type, before.curve(0).type);
+  const std::vector<std::string> lines = r.report.lines();
+  EXPECT_NE(
+      lines[2].find("fold-overs: " + std::to_string(r.report.foldOvers) + " (0 on the curve)"),
+      std::string::npos)
+      << lines[2];
 }
 
 TEST(DeformCurve, BendsOneOfTwoCurvesAndLeavesTheOtherAlone) {
@@ -175,6 +180,8 @@ TEST(DeformCurve, ReportsFoldOversOnAnExtremeTargetAndFailsThatTry) {
     EXPECT_NE(m.find("check 'no fold-over on the curve' failed"), std::string::npos) << m;
     EXPECT_NE(m.find("inverted tets of the map hold the target"), std::string::npos) << m;
     EXPECT_NE(m.find("last region "), std::string::npos) << m;
+    EXPECT_NE(m.find("failed after 2 tries"), std::string::npos) << m;  // one retry, larger
+    EXPECT_NE(m.find("; try 1 ("), std::string::npos) << m;
   }
 }
 
