@@ -5,11 +5,15 @@
 //    curvature on several solids; each target picked automatically among the curves whose
 //    scenario applies. Counts successes, refusals (no ball region avoids the other curves)
 //    and failures (verification failed after the retries).
+//  - DeformCurve1M: the straight curve x = y = 0 of a field on the same 1M-tet box bent onto a
+//    smooth bump of height 0.3 (paper §6.1), verification included, for several region
+//    distances.
 // Commands and figures: bench/RESULTS.md.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <map>
@@ -17,6 +21,7 @@
 #include <string>
 
 #include "core/design/propagate.h"
+#include "core/edit/deform_curve.h"
 #include "core/edit/remove_curves.h"
 #include "core/structured_mesh.h"
 #include "core/surface/primitives.h"
@@ -75,6 +80,47 @@ void RemoveLoop1M(benchmark::State& state) {
 }
 BENCHMARK(RemoveLoop1M)
     ->Arg(5)
+    ->Arg(10)
+    ->Arg(20)
+    ->Arg(-1)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1)
+    ->Repetitions(2)
+    ->ReportAggregatesOnly(false);
+
+void DeformCurve1M(benchmark::State& state) {
+  static const TensorField field =
+      testing::designedField(makeBoxMesh(55, 55, 55, Vec3(-1, -1, -1), Vec3(1, 1, 1)),
+                             [](const Vec3& p) { return testing::Complex(p.x(), p.y()); });
+  DeformCurveOptions o;
+  o.pick = Vec3(0, 0, 0.05);
+  const Vec3 d = Vec3(1, 0.4, 0).normalized();
+  for (int i = 0; i <= 12; ++i) {  // the bump of tests/core/edit/deform_curve_test.cpp
+    const double z = -0.45 + 0.9 * i / 12, c = std::cos(3.14159265358979 * z / 0.9);
+    o.target.push_back(0.3 * c * c * d + Vec3(0, 0, z));
+  }
+  o.regionDistance = state.range(0) < 0 ? -1 : state.range(0) / 100.0;
+  DeformCurveResult last{field, {}, {}, {}};
+  bool verified = true;
+  for (auto _ : state) {
+    try {
+      last = deformCurve(field, o);
+    } catch (const DeformationFailed& e) {  // reported, not hidden
+      verified = false;
+      state.SetLabel(e.what());
+    }
+  }
+  state.counters["verified"] = verified;
+  state.counters["tets"] = double(field.mesh().tetCount());
+  state.counters["region_tets"] = double(last.report.regionTets);
+  state.counters["solved_vertices"] = double(last.report.solvedVertices);
+  state.counters["fold_overs"] = double(last.report.foldOvers);
+  state.counters["hausdorff"] = last.report.hausdorff;
+  state.counters["bound"] = last.report.tolerance;
+  state.counters["tries"] = double(last.report.tries.size());
+  state.counters["peak_MB"] = peakMegabytes();
+}
+BENCHMARK(DeformCurve1M)
     ->Arg(10)
     ->Arg(20)
     ->Arg(-1)

@@ -13,6 +13,7 @@ void registerMergeConstraints(graph::NodeRegistry&);
 void registerPropagate(graph::NodeRegistry&);
 void registerLocalSmooth(graph::NodeRegistry&);
 void registerRemoveCurves(graph::NodeRegistry&);
+void registerDeformCurve(graph::NodeRegistry&);
 void registerExtractDegenerateCurves(graph::NodeRegistry&);
 void registerGaborNoise(graph::NodeRegistry&);
 void registerExportVtu(graph::NodeRegistry&);
@@ -34,6 +35,7 @@ void registerAll(graph::NodeRegistry& registry) {
   registerPropagate(registry);
   registerLocalSmooth(registry);
   registerRemoveCurves(registry);
+  registerDeformCurve(registry);
   registerExtractDegenerateCurves(registry);
   registerGaborNoise(registry);
   registerExportVtu(registry);

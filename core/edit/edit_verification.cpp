@@ -45,10 +45,11 @@ bool curveTouchesTets(const TetMesh& mesh, const DegenerateCurve& curve,
   return false;
 }
 
-EditVerification verifyEdit(const TensorField& before, const TensorField& after,
-                            std::span<const int> freeVertices, std::span<const int> regionTets,
-                            const DegenerateCurves& curvesBefore,
-                            const DegenerateCurves& curvesAfter, std::span<const int> targetIds) {
+EditVerification verifyOutside(const TensorField& before, const TensorField& after,
+                               std::span<const int> freeVertices, std::span<const int> regionTets,
+                               const DegenerateCurves& curvesBefore,
+                               const DegenerateCurves& curvesAfter, std::span<const int> targetIds,
+                               std::vector<char>& matched) {
   const TetMesh& mesh = before.mesh();
   EditVerification r;
   auto fail = [&](const char* check, std::string detail) {
@@ -68,14 +69,9 @@ EditVerification verifyEdit(const TensorField& before, const TensorField& after,
   }
   const std::vector<unsigned char> inRegion = tetFlags(mesh, regionTets);
   std::vector<char> isTarget(curvesBefore.size(), 0);
-  std::vector<Vec3> targetPoints;
-  for (int id : targetIds) {
-    isTarget[id] = 1;
-    const auto& pts = curvesBefore.curve(id).points;
-    targetPoints.insert(targetPoints.end(), pts.begin(), pts.end());
-  }
+  for (int id : targetIds) isTarget[id] = 1;
   // 2. Untouched curves, matched one to one.
-  std::vector<char> matched(curvesAfter.size(), 0);
+  matched.assign(curvesAfter.size(), 0);
   for (const DegenerateCurve& c : curvesBefore.curves()) {
     if (isTarget[c.id]) continue;
     if (curveTouchesTets(mesh, c, inRegion))
@@ -92,12 +88,37 @@ EditVerification verifyEdit(const TensorField& before, const TensorField& after,
       return fail("untouched curves unchanged",
                   describeCurve(c) + ", which does not touch the region, changed or vanished");
   }
-  // 3 and 4. Curves after the edit that are not untouched ones.
+  for (const DegenerateCurve& d : curvesAfter.curves())
+    if (!matched[d.id] && !curveTouchesTets(mesh, d, inRegion))
+      return fail("untouched curves unchanged", describeCurve(d) + " appeared outside the region");
+  r.passed = true;
+  return r;
+}
+
+EditVerification verifyEdit(const TensorField& before, const TensorField& after,
+                            std::span<const int> freeVertices, std::span<const int> regionTets,
+                            const DegenerateCurves& curvesBefore,
+                            const DegenerateCurves& curvesAfter, std::span<const int> targetIds) {
+  std::vector<char> matched;
+  EditVerification r = verifyOutside(before, after, freeVertices, regionTets, curvesBefore,
+                                     curvesAfter, targetIds, matched);
+  if (!r.passed) return r;
+  r.passed = false;
+  auto fail = [&](const char* check, std::string detail) {
+    r.failedCheck = check;
+    r.detail = std::move(detail);
+    return r;
+  };
+  std::vector<Vec3> targetPoints;
+  for (int id : targetIds) {
+    const auto& pts = curvesBefore.curve(id).points;
+    targetPoints.insert(targetPoints.end(), pts.begin(), pts.end());
+  }
+  const TetMesh& mesh = before.mesh();
+  // 3 and 4. Curves after the edit that are not untouched ones (all touch the region).
   const double near = 2 * mesh.meanEdgeLength();
   for (const DegenerateCurve& d : curvesAfter.curves()) {
     if (matched[d.id]) continue;
-    if (!curveTouchesTets(mesh, d, inRegion))
-      return fail("untouched curves unchanged", describeCurve(d) + " appeared outside the region");
     if (distanceToPoints(d, targetPoints) <= near)
       return fail("targets gone", describeCurve(d) + " (" + std::to_string(d.points.size()) +
                                       " points) remains where a target was");

@@ -30,6 +30,15 @@ EditVerification verifyEdit(const TensorField& before, const TensorField& after,
                             const DegenerateCurves& curvesBefore,
                             const DegenerateCurves& curvesAfter, std::span<const int> targetIds);
 
+/// Checks 1 and 2 only (for edits that keep a target in the region, e.g. a deformation, §6.1):
+/// on success `matchedAfter` (one flag per curve of `curvesAfter`) marks the curves after the
+/// edit that are untouched curves of before; the others pass through the region.
+EditVerification verifyOutside(const TensorField& before, const TensorField& after,
+                               std::span<const int> freeVertices, std::span<const int> regionTets,
+                               const DegenerateCurves& curvesBefore,
+                               const DegenerateCurves& curvesAfter, std::span<const int> targetIds,
+                               std::vector<char>& matchedAfter);
+
 /// Whether a curve has a point whose source lies in a flagged tet.
 bool curveTouchesTets(const TetMesh& mesh, const DegenerateCurve& curve,
                       const std::vector<unsigned char>& tetFlag);
