@@ -21,11 +21,20 @@ void declare(graph::NodeDecl& d) {
   declareVoxelInputs(d);
   d.param<std::string>("path").byDefault("field.vdb").outputFile("*.vdb").doc("Output file.");
   declareVoxelParams(d, "quantities");
+  d.param<std::string>("density")
+      .choices(kVoxelDensityChoices)
+      .doc(std::string("The scalar of the `field` written as the fog-volume grid `density` "
+                       "(with `volume`, the volume is): ") +
+           kVoxelDensityDoc);
   d.migration(1, [](graph::Json& p) { splitQuantityText(p, "quantities", "quantities"); });
+  // typeVersion 2 wrote no density grid from a field: old files keep writing the same grids.
+  d.migration(2, [](graph::Json& p) {
+    if (!p.contains("density")) p["density"] = "none";
+  });
 }
 
 void cook(graph::CookContext& c) {
-  const VoxelSource source = voxelSourceOf(c, "quantities");
+  const VoxelSource source = voxelSourceOf(c, "quantities", "density");
   const std::filesystem::path path = c.path("path");
   io::VoxelExportStats stats;
   if (source == VoxelSource::Volume) {
@@ -37,6 +46,8 @@ void cook(graph::CookContext& c) {
     io::VdbExportOptions o;
     o.voxelSize = voxelSizeOf(c, field->mesh());
     o.quantities = quantitiesOf(c, "quantities");
+    o.quantities.density =
+        io::voxelDensityFunction(c.param("density", kVoxelDensityChoices), *field);
     o.source = "node " + c.nodeName();
     stats = io::writeFieldVdb(path, *field, o, progressOf(c));
   }
@@ -46,6 +57,6 @@ void cook(graph::CookContext& c) {
 
 }  // namespace
 
-void registerExportVdb(graph::NodeRegistry& r) { r.add("ExportVDB", 2, declare, cook); }
+void registerExportVdb(graph::NodeRegistry& r) { r.add("ExportVDB", 3, declare, cook); }
 
 }  // namespace tfd::nodes
