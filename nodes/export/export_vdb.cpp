@@ -1,6 +1,8 @@
 // ExportVDB: the field resampled on a voxel grid, or a scalar volume, for Houdini and Blender.
 #include "io/volume/vdb_writer.h"
 
+#include <nlohmann/json.hpp>
+
 #include "graph/node_registry.h"
 #include "nodes/export/voxel_export_support.h"
 #include "nodes/node_support.h"
