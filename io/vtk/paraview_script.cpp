@@ -66,7 +66,7 @@ void writeParaviewScript(const std::filesystem::path& path, const ParaviewScene&
     << ")])\n"
        "meshDisplay = Show(mesh, view)\n"
        "meshDisplay.Representation = 'Surface'\n"
-       "ColorBy(meshDisplay, None)\n"
+       "meshDisplay.ColorArrayName = ['POINTS', '']  # solid colour\n"
        "meshDisplay.AmbientColor = [0.75, 0.75, 0.75]\n"
        "meshDisplay.DiffuseColor = [0.75, 0.75, 0.75]\n"
        "meshDisplay.Opacity = 0.15\n";
@@ -114,6 +114,7 @@ void writeParaviewScript(const std::filesystem::path& path, const ParaviewScene&
     }
   }
   s << "\nview.ResetCamera()\n"
+       "view.GetActiveCamera().Dolly(1.6)\n"
        "if '--png' in sys.argv:\n"
        "    view.ViewSize = [1200, 900]\n"
        "    view.OrientationAxesVisibility = 0\n"
@@ -146,7 +147,7 @@ ParaviewSceneFiles writeFieldParaviewScene(const std::filesystem::path& vtu,
   const double sites = double(std::max<std::size_t>(
       1, std::min<std::size_t>(std::size_t(scene.maxGlyphs), mesh.vertexCount())));
   const double spacing = std::cbrt(volume / sites);
-  scene.glyphScale = largest > 0 ? 0.8 * spacing / largest : 1.0;
+  scene.glyphScale = largest > 0 ? 0.6 * spacing / largest : 1.0;
   scene.tubeRadius = 0.003 * (mesh.boundsMax() - mesh.boundsMin()).norm();
 
   ParaviewSceneFiles files;

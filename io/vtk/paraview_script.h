@@ -23,7 +23,7 @@ struct ParaviewScene {
   std::string glyphTensor;           ///< point array for the glyphs (e.g. "T.glyph"); empty: none
   std::string typeArray = "T.type";  ///< point array the glyphs are coloured by; empty: solid
   double glyphScale = 1;             ///< ParaView's Tensor Glyph scale factor
-  int maxGlyphs = 1500;              ///< glyphs at most this many (random) vertices
+  int maxGlyphs = 800;               ///< glyphs at most this many (random) vertices
   double tubeRadius = 0;             ///< curve tube radius in world units; 0: plain lines
 };
 
@@ -41,7 +41,7 @@ struct ParaviewSceneFiles {
 
 /// Next to `vtu` (already written by writeFieldVtu with glyphTensor, so it holds
 /// `glyphTensor`): the curves as .vtp (writeCurvesVtp, when `curves` is not null) and the
-/// script. The glyph scale makes the largest glyph axis 0.8 × the mean spacing of the sites
+/// script. The glyph scale makes the largest glyph axis 0.6 × the mean spacing of the sites
 /// (cube root of the mesh volume per glyph) for T + c I, c = glyphTensorShift(values, margin);
 /// the tube radius is 0.3 % of the mesh's bounding-box diagonal.
 ParaviewSceneFiles writeFieldParaviewScene(const std::filesystem::path& vtu,

@@ -61,7 +61,7 @@ void declare(graph::NodeDecl& d) {
           "Also write `<name>.paraview.py` (and `<name>.curves.vtp` with `curves` connected) "
           "next to the .vtu: a ParaView scene of the mesh, the curves coloured by `colour` with "
           "Map Scalars off, and ellipsoid glyphs of `T.glyph` (added whatever glyph_tensor "
-          "says) at up to 1500 random vertices.");
+          "says) at up to 800 random vertices.");
   d.migration(1, [](graph::Json& params) {
     // typeVersion 1 called raw appended data "binary"; VTK's own word is "appended".
     if (params.contains("encoding") && params["encoding"] == "binary")
