@@ -14,10 +14,14 @@ namespace {
 void declare(graph::NodeDecl& d) {
   d.doc(
        "Writes an OpenVDB file. From `field`: float grids `T.xx T.yy T.zz T.xy T.yz T.xz`, "
-       "optionally Vec3 grids `T.eigval` and `T.e1 T.e2 T.e3`; voxels whose centre lies inside "
-       "the mesh are active, the rest inactive with value 0. From `volume`: one float grid "
-       "`density` of class fog volume on the volume's voxels, active where its mask is set. "
-       "Connect exactly one of the two inputs.")
+       "optionally Vec3 grids `T.eigval` and `T.e1 T.e2 T.e3` (grid class unknown), and a "
+       "float grid `density` (grid class fog volume, values in [0, 1]) of the measure chosen "
+       "by `density`, so Blender's volume object and Houdini render it as imported; voxels "
+       "whose centre lies inside the mesh are active, the rest inactive with value 0. From "
+       "`volume`: one float grid `density` on the volume's voxels, active where its mask is "
+       "set (a fog volume unless a value is negative, e.g. GaborNoise range signed). Connect "
+       "exactly one of the two inputs. `vdb_print -l file.vdb` (Debian libopenvdb-tools) lists "
+       "the grids and their classes.")
       .category("Export")
       .sideEffect();
   declareVoxelInputs(d);
