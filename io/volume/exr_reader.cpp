@@ -110,6 +110,7 @@ ExrImage readExrImage(const std::filesystem::path& path) {
       if (std::string(it.name()) == "channels") continue;
       image.attributes[it.name()] = describe(it.attribute());
     }
+    header.channels().layers(image.layers);
     Imf::FrameBuffer frameBuffer;
     const std::size_t count = std::size_t(image.width) * image.height;
     for (auto it = header.channels().begin(); it != header.channels().end(); ++it) {

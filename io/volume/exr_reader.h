@@ -4,6 +4,7 @@
 #include <array>
 #include <filesystem>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,9 @@ struct ExrImage {
   std::map<std::string, ExrAttribute> attributes;  ///< every header attribute except channels
   /// Channel name → pixel type name ("float", "half", "uint").
   std::map<std::string, std::string> channelTypes;
+  /// Layer names as OpenEXR parses them (Imf::ChannelList::layers: the text before a
+  /// channel name's last '.'); channels without a '.' (R, G, B, A) are in no layer.
+  std::set<std::string> layers;
   /// Channel name → pixels converted to float, row-major from the data window's first row.
   std::map<std::string, std::vector<float>> pixels;
 

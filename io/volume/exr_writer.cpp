@@ -23,6 +23,7 @@
 #include "io/atomic_file.h"
 #include "io/temporary_files.h"
 #include "io/volume/frame_pattern.h"
+#include "io/volume/voxel_density.h"
 
 namespace tfd::io {
 
@@ -206,17 +207,20 @@ VoxelExportStats writeFieldExrSlices(const std::string& pattern, const core::Ten
                                      const core::Progress& progress) {
   framePlaceholderInFileName(pattern);  // a bad pattern fails first
   const VoxelQuantities& quantities = options.quantities;
-  if (quantities.channelCount() == 0) {
+  if (quantities.channelCount() == 0 && !options.preview) {
     throw core::Error("EXR export to '" + pattern + "': no quantity selected");
   }
   const VoxelLattice lattice =
       latticeForMesh(field.mesh(), options.voxelSize, options.origin, options.maxVoxels);
   SliceContent content;
   content.channels = quantities.channelNames(options.tensorName);
+  const bool preview = bool(options.preview);
+  if (preview) content.channels.insert(content.channels.end(), {"R", "G", "B"});
   if (options.mask) content.channels.push_back("A");
   content.tensorAttributes = true;
   const int channels = static_cast<int>(content.channels.size());
   const int quantityChannels = quantities.channelCount();
+  const int maskChannel = quantityChannels + (preview ? 3 : 0);
   content.fillRow = [&](int j, int k, float* out) {
     std::size_t active = 0;
     RowSampler sampler(field);
@@ -225,7 +229,11 @@ VoxelExportStats writeFieldExrSlices(const std::string& pattern, const core::Ten
       const VoxelSample sample = sampler(p);
       if (sample.inside()) {
         quantities.evaluate(p, sample, out);
-        if (options.mask) out[quantityChannels] = 1.0f;
+        if (preview) {
+          const auto rgb = previewColour(options.preview(p, sample));
+          std::copy(rgb.begin(), rgb.end(), out + quantityChannels);
+        }
+        if (options.mask) out[maskChannel] = 1.0f;
         ++active;
       } else {
         std::fill(out, out + channels, 0.0f);

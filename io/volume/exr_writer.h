@@ -17,8 +17,14 @@
 //   T.eigval.x/.y/.z                "eigenvalues" λ1 ≥ λ2 ≥ λ3
 //   T.e1.x/.y/.z, T.e2.…, T.e3.…    "eigenvectors" (unit, sign arbitrary)
 //   density                         "density"
+//   R G B                           preview (optional): a scalar of the field (e.g. closeness
+//                                   to degeneracy, io/volume/voxel_density.h) through
+//                                   previewColour, so a plain viewer shows the slice
 //   A                               mask: 1 where the voxel centre is inside the mesh (optional)
-// Pixels outside the mesh are 0 in every channel.
+// Pixels outside the mesh are 0 in every channel. Names follow OpenEXR's layer convention
+// (ImfChannelList: the text before the last '.' is the layer): `T.xx` is channel `xx` of layer
+// `T`, `T.eigval.x` channel `x` of layer `T.eigval`; R, G, B, A are the default layer, what a
+// viewer shows.
 // A ScalarVolume (writeVolumeExrSlices) is written on its own grid as R, G, B (the value, so
 // any viewer shows it as grey levels) and A (its mask), 0 outside the mask.
 //
@@ -59,7 +65,9 @@ struct ExrExportOptions {
   core::Vec3 origin = core::Vec3::Zero();  ///< world position of voxel (0, 0, 0)'s centre
   VoxelQuantities quantities;              ///< default: the tensor only
   std::string tensorName = "T";
-  bool mask = true;    ///< add the channel "A" (1 inside, 0 outside)
+  bool mask = true;  ///< add the channel "A" (1 inside, 0 outside)
+  /// When set, add R, G, B: previewColour of this scalar (expected in [0, 1]) inside the mesh.
+  VoxelScalarFunction preview;
   int firstFrame = 0;  ///< frame number of the lowest slice
   int sliceCount = 0;  ///< 0: every slice; n > 0: n evenly spaced slices
   double maxVoxels = kDefaultMaxVoxels;

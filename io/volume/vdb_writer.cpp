@@ -105,6 +105,15 @@ openvdb::math::Transform::Ptr latticeTransform(const VoxelLattice& lattice) {
   return transform;
 }
 
+/// Fog volume (what Blender's volume object and Houdini render as imported) when no active
+/// value is negative, else unknown: a fog volume's density is never negative, and a signed
+/// scalar is no signed distance either (OpenVDB's other scalar class, level set).
+openvdb::GridClass densityGridClass(const openvdb::FloatGrid& grid) {
+  for (auto it = grid.cbeginValueOn(); it; ++it)
+    if (!(*it >= 0)) return openvdb::GRID_UNKNOWN;
+  return openvdb::GRID_FOG_VOLUME;
+}
+
 }  // namespace
 
 VoxelExportStats writeFieldVdb(const std::filesystem::path& path, const core::TensorField& field,
@@ -143,7 +152,7 @@ VoxelExportStats writeFieldVdb(const std::filesystem::path& path, const core::Te
     grid->setName(p.name);
     grid->setTransform(transform->copy());
     grid->setSaveFloatAsHalf(false);
-    grid->setGridClass(p.tensorDerived ? openvdb::GRID_UNKNOWN : openvdb::GRID_FOG_VOLUME);
+    grid->setGridClass(openvdb::GRID_UNKNOWN);  // density: densityGridClass once filled
     if (p.tensorDerived) {
       grid->insertMeta("tensor_components", openvdb::StringMetadata("xx,yy,zz,xy,yz,xz"));
     }
@@ -216,6 +225,12 @@ VoxelExportStats writeFieldVdb(const std::filesystem::path& path, const core::Te
   }
   progress.throwIfCancelled();
   progress.report(1.0, "writing");
+  for (std::size_t g = 0; g < plans.size(); ++g) {
+    if (!plans[g].tensorDerived) {
+      auto& density = static_cast<openvdb::FloatGrid&>(*grids[g]);
+      density.setGridClass(densityGridClass(density));
+    }
+  }
 
   openvdb::MetaMap extra;
   extra.insertMeta("tensor_components", openvdb::StringMetadata("xx,yy,zz,xy,yz,xz"));
@@ -239,7 +254,6 @@ VoxelExportStats writeVolumeVdb(const std::filesystem::path& path, const core::S
   grid->setName(options.gridName);
   grid->setTransform(latticeTransform(lattice));
   grid->setSaveFloatAsHalf(false);
-  grid->setGridClass(openvdb::GRID_FOG_VOLUME);
 
   const std::array<int, 3> blockMin{leafBlock(lattice.min[0]), leafBlock(lattice.min[1]),
                                     leafBlock(lattice.min[2])};
@@ -275,6 +289,7 @@ VoxelExportStats writeVolumeVdb(const std::filesystem::path& path, const core::S
     if (leaves[b]) grid->tree().addLeaf(leaves[b].release());
     stats.activeVoxels += active[b];
   }
+  grid->setGridClass(densityGridClass(*grid));
   progress.report(1.0, "writing");
   writeVdbFile(path, {grid}, options.generator, options.source, openvdb::MetaMap());
   stats.filesWritten = 1;

@@ -7,7 +7,11 @@
 //   T.eigval                       Vec3SGrid (λ1, λ2, λ3) descending ("eigenvalues")
 //   T.e1 T.e2 T.e3                 Vec3SGrid, unit eigenvectors of λ1, λ2, λ3 ("eigenvectors");
 //                                  vector type "invariant", their sign is arbitrary
-//   density                        FloatGrid, grid class fog volume ("density")
+//   density                        FloatGrid ("density", e.g. io/volume/voxel_density.h)
+// Grid classes: the tensor-derived grids are "unknown" (no OpenVDB class fits a tensor
+// component or an eigenvector); `density` is a fog volume (Blender's volume object and Houdini
+// render it as imported) when none of its active values is negative, else unknown. Nothing is
+// a level set: no grid is a signed distance.
 // Every grid: background 0, linear transform with the voxel size, voxel (i, j, k) centred on
 // world = origin + voxelSize * (i, j, k) (field_resample.h); active exactly at the voxels whose
 // centre is inside the mesh, inactive (value 0) elsewhere; values stored as 32-bit floats.
@@ -63,7 +67,8 @@ struct VolumeVdbOptions {
 };
 
 /// Writes a scalar volume as one FloatGrid named `gridName` (default "density"), grid class
-/// fog volume, so Houdini and Blender render it with no set-up: background 0, active exactly at
+/// fog volume when no value in the mask is negative (Houdini and Blender render it with no
+/// set-up), else unknown: background 0, active exactly at
 /// the voxels of the volume's mask, same transform and voxel convention as writeFieldVdb
 /// (voxel (i, j, k) of the volume's grid is index coordinate (i, j, k)), 32-bit floats. File
 /// metadata: generator, source (when given), voxel_convention. Leaves are built in parallel

@@ -2,6 +2,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -119,7 +120,10 @@ void writeMeshVtu(const std::filesystem::path& path, const core::TetMesh& mesh,
   if (!options.activeTensors.empty()) pointAttributes.push_back({"Tensors", options.activeTensors});
   xml.begin("PointData", pointAttributes);
   for (const auto& a : options.pointData) {
-    if (a.name == options.activeTensors && a.components == 6 && a.type == VtkType::Float64) {
+    const bool tensor = a.name == options.activeTensors ||
+                        std::find(options.tensorArrays.begin(), options.tensorArrays.end(),
+                                  a.name) != options.tensorArrays.end();
+    if (tensor && a.components == 6 && a.type == VtkType::Float64) {
       xml.dataArray(a.name, 6, std::span<const double>(a.values),
                     {{"ComponentName0", "XX"},
                      {"ComponentName1", "YY"},
@@ -162,6 +166,19 @@ void writeMeshVtu(const std::filesystem::path& path, const core::TetMesh& mesh,
   progress.throwIfCancelled();
   writeAtomically(path, [&](OutputFile& out) { xml.save(out); });
   progress.report(1.0, "VTU written");
+}
+
+double glyphTensorShift(const std::vector<core::Tensor>& tensors, double margin) {
+  if (!(margin > 0) || !std::isfinite(margin))
+    throw core::Error("glyph tensor margin must be positive, not " + std::to_string(margin));
+  double smallest = std::numeric_limits<double>::infinity(), largest = 0;
+  for (const core::Tensor& t : tensors) {
+    const core::Vec3 l = core::eigenDecompose(t).values;
+    smallest = std::min(smallest, l[2]);
+    largest = std::max({largest, std::abs(l[0]), std::abs(l[2])});
+  }
+  if (tensors.empty()) return margin;
+  return -smallest + margin * (largest > 0 ? largest : 1.0);
 }
 
 void writeFieldVtu(const std::filesystem::path& path, const core::TensorField& field,
@@ -224,6 +241,15 @@ void writeFieldVtu(const std::filesystem::path& path, const core::TensorField& f
     for (auto& e : eigvec) mesh.pointData.push_back(std::move(e));
   }
   if (options.tensorType) mesh.pointData.push_back(std::move(type));
+  if (options.glyphTensor) {
+    const double shift = glyphTensorShift(field.values(), options.glyphMargin);
+    NamedArray glyph{T + ".glyph", 6, mesh.pointData[0].values, VtkType::Float64};
+    for (std::size_t v = 0; v < n; ++v)
+      for (int i = 0; i < 3; ++i) glyph.values[6 * v + i] += shift;
+    mesh.pointData.push_back(std::move(glyph));
+    mesh.activeTensors = T + ".glyph";
+    mesh.tensorArrays = {T};
+  }
   mesh.pointData.insert(mesh.pointData.end(), options.pointData.begin(), options.pointData.end());
   mesh.cellData = options.cellData;
   writeMeshVtu(path, field.mesh(), mesh, progress);

@@ -14,7 +14,10 @@ void declare(graph::NodeDecl& d) {
   d.doc(
        "Writes a sequence of OpenEXR images, one per z-slice of a voxel grid (bottom to top); "
        "header attributes `tfd.*` give the voxel size, slice position and pixel placement. "
-       "From `field`: 32-bit float channels named `T.xx` ... plus a mask `A`. From `volume`: "
+       "From `field`: 32-bit float channels named `T.xx` ... (OpenEXR layers: `T.xx` is "
+       "channel `xx` of layer `T`, `T.eigval.x` channel `x` of layer `T.eigval`), a preview "
+       "`R`, `G`, `B` of the measure chosen by `preview` through a dark-blue, teal, "
+       "yellow-green, light-yellow colour map (0 to 1), and a mask `A`. From `volume`: "
        "the value in `R`, `G`, `B` and its mask in `A`, on the volume's voxels. Connect "
        "exactly one of the two inputs.")
       .category("Export")
@@ -25,6 +28,12 @@ void declare(graph::NodeDecl& d) {
       .outputFile("*.exr")
       .doc("File pattern with one slice-number placeholder: %d, %04d or ####.");
   declareVoxelParams(d, "quantities");
+  d.param<std::string>("preview")
+      .choices(kVoxelDensityChoices)
+      .doc(std::string("The scalar of the `field` shown in the preview channels R, G, B, so "
+                       "a plain image viewer or Blender's compositor shows the slice (with "
+                       "`volume`, R, G, B hold the volume): ") +
+           kVoxelDensityDoc);
   d.param<int>("slice_count")
       .byDefault(0)
       .min(0)
@@ -36,7 +45,7 @@ void declare(graph::NodeDecl& d) {
 }
 
 void cook(graph::CookContext& c) {
-  const VoxelSource source = voxelSourceOf(c, "quantities");
+  const VoxelSource source = voxelSourceOf(c, "quantities", "preview");
   const std::filesystem::path pattern = c.path("path");
   const int sliceCount = c.param<int>("slice_count");
   io::VoxelExportStats stats;
@@ -51,6 +60,7 @@ void cook(graph::CookContext& c) {
     io::ExrExportOptions o;
     o.voxelSize = voxelSizeOf(c, field->mesh());
     o.quantities = quantitiesOf(c, "quantities");
+    o.preview = io::voxelDensityFunction(c.param("preview", kVoxelDensityChoices), *field);
     o.sliceCount = sliceCount;
     o.source = "node " + c.nodeName();
     stats = io::writeFieldExrSlices(pattern.string(), *field, o, progressOf(c));

@@ -2,6 +2,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/topology/curve_tets.h"
+#include "io/vtk/paraview_script.h"
 #include "io/vtk/vtu_writer.h"
 
 #include "graph/node_registry.h"
@@ -24,7 +25,13 @@ void declare(graph::NodeDecl& d) {
        "`curve_colour` (the paper's Fig. 5 colours: L-wedge green, L-trisector blue, P-wedge "
        "yellow, P-trisector red, transition white); threshold on curve_id >= 0 to see them. "
        "With `region` connected (e.g. RemoveCurves' region), the cell array `region` is 1 on "
-       "its tets and 0 elsewhere.")
+       "its tets and 0 elsewhere. With `glyph_tensor`, the point array `T.glyph` = T + c I "
+       "(below) is added and made the active tensor, so ParaView's Tensor Glyph draws "
+       "ellipsoids as opened. With `paraview_script`, a ParaView Python script "
+       "`<name>.paraview.py` (and, with `curves` connected, the curves as `<name>.curves.vtp`) "
+       "is written next to the .vtu: `paraview --script=<name>.paraview.py` opens the mesh, "
+       "the curves in their Fig. 5 colours and the glyphs together; `pvpython "
+       "<name>.paraview.py --png view.png` renders a picture.")
       .category("Export")
       .sideEffect();
   d.input<core::TensorField>("field");
@@ -38,6 +45,23 @@ void declare(graph::NodeDecl& d) {
       .doc(
           "appended: raw appended binary data (smallest, fastest; VTK's word); base64: inline "
           "base64 binary (what VTK calls \"binary\"); ascii: readable text.");
+  d.param<bool>("glyph_tensor")
+      .byDefault(false)
+      .doc(
+          "Add `T.glyph` = T + c I with one c for the whole field, c = -min(l3) + 0.1 max|l| "
+          "(l3 the smallest eigenvalue at any vertex, max|l| the largest eigenvalue magnitude): "
+          "positive definite (every eigenvalue at least 0.1 max|l|, so no glyph is flat or "
+          "inside out), the same eigenvectors as T, and one shift everywhere so glyph sizes "
+          "compare across the mesh and each shape shows T's deviator (linear tensors cigars, "
+          "planar ones discs). T's own eigenvalues have both signs (tfd keeps T traceless), "
+          "which Tensor Glyph cannot draw as ellipsoids.");
+  d.param<bool>("paraview_script")
+      .byDefault(false)
+      .doc(
+          "Also write `<name>.paraview.py` (and `<name>.curves.vtp` with `curves` connected) "
+          "next to the .vtu: a ParaView scene of the mesh, the curves coloured by `colour` with "
+          "Map Scalars off, and ellipsoid glyphs of `T.glyph` (added whatever glyph_tensor "
+          "says) at up to 800 random vertices.");
   d.migration(1, [](graph::Json& params) {
     // typeVersion 1 called raw appended data "binary"; VTK's own word is "appended".
     if (params.contains("encoding") && params["encoding"] == "binary")
@@ -94,10 +118,21 @@ void cook(graph::CookContext& c) {
     o.cellData.push_back({"region", 1, std::move(flags), io::VtkType::UInt8});
     c.info(std::to_string(region->tets.size()) + " tets marked as the region");
   }
+  const bool script = c.param<bool>("paraview_script");
+  o.glyphTensor = script || c.param<bool>("glyph_tensor");
   const std::filesystem::path path = c.path("path");
   io::writeFieldVtu(path, *field, o, progressOf(c));
   c.wroteFile(path);
   c.info("wrote " + path.string());
+  if (script) {
+    const auto curves = c.inputOr<core::DegenerateCurves>("curves", nullptr);
+    const io::ParaviewSceneFiles files = io::writeFieldParaviewScene(
+        path, *field, curves.get(), o.tensorName + ".glyph", o.glyphMargin);
+    if (!files.curves.empty()) c.wroteFile(files.curves);
+    c.wroteFile(files.script);
+    c.info("wrote " + files.script.string() +
+           " (paraview --script=" + files.script.filename().string() + ")");
+  }
 }
 
 }  // namespace

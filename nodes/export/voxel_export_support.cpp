@@ -35,7 +35,8 @@ void declareVoxelInputs(graph::NodeDecl& d) {
       "quantities apply to `field` only.");
 }
 
-VoxelSource voxelSourceOf(const graph::CookContext& c, const std::string& quantitiesName) {
+VoxelSource voxelSourceOf(const graph::CookContext& c, const std::string& quantitiesName,
+                          const std::string& densityName) {
   const bool field = c.hasInput("field"), volume = c.hasInput("volume");
   if (field && volume) {
     throw graph::NodeError(
@@ -55,6 +56,14 @@ VoxelSource voxelSourceOf(const graph::CookContext& c, const std::string& quanti
     throw c.paramError(quantitiesName,
                        "applies to input 'field' only; leave it at [\"tensor\"] with input "
                        "'volume'");
+  }
+  if (!densityName.empty()) {
+    const std::string density = c.param<std::string>(densityName);
+    if (density != "degeneracy" && density != "none") {
+      throw c.paramError(densityName,
+                         "applies to input 'field' only (the volume itself is written); leave "
+                         "it at \"degeneracy\" or \"none\" with input 'volume'");
+    }
   }
   return VoxelSource::Volume;
 }

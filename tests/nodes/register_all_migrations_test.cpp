@@ -48,7 +48,7 @@ TEST(NodeMigrations, UpgradedFilesSaveAsTheCurrentTypeVersionAndLoadAgain) {
   const graph::Graph g = graph::loadGraphFile(kFixture, registry());
   const graph::Json saved = graph::graphToJson(g);
   for (const char* node : {"vtu", "vdb", "exr"}) {
-    EXPECT_EQ(saved["nodes"][node]["typeVersion"], 2) << node;
+    EXPECT_EQ(saved["nodes"][node]["typeVersion"], node == std::string("vdb") ? 3 : 2) << node;
     EXPECT_FALSE(saved["nodes"][node]["params"].contains("quantity")) << node;
   }
   EXPECT_EQ(saved["nodes"]["exr"]["params"]["quantities"],
@@ -56,6 +56,22 @@ TEST(NodeMigrations, UpgradedFilesSaveAsTheCurrentTypeVersionAndLoadAgain) {
   const std::string text = graph::graphToText(g);
   const graph::Graph again = graph::parseGraph(text, registry(), "saved");
   EXPECT_EQ(graph::graphToText(again), text);
+}
+
+TEST(NodeMigrations, ExportVdbOfTypeVersion2WritesNoDensityGridAsBefore) {
+  // ExportVDB 2 -> 3: the `density` grid from a field is new; older files keep the grids they
+  // wrote (density "none"), new nodes get the default, closeness to degeneracy.
+  const graph::Graph g =
+      graph::loadGraphFile(TFD_TEST_DATA_DIR "/graphs/nodes/exporters_v3.tfd.json", registry());
+  EXPECT_EQ(std::get<std::string>(g.param("vdb_v2", "density")), "none");
+  EXPECT_EQ(std::get<std::string>(g.param("vdb_v3", "density")), "anisotropy");
+  const graph::Graph v1 = graph::loadGraphFile(kFixture, registry());
+  EXPECT_EQ(std::get<std::string>(v1.param("vdb", "density")), "none");
+  const graph::Graph fresh = graph::parseGraph(
+      R"({"format": "tfd-graph", "formatVersion": 2, "nodes": {
+        "v": {"type": "ExportVDB", "typeVersion": 3, "params": {}}}, "links": []})",
+      registry(), "new.tfd.json");
+  EXPECT_EQ(std::get<std::string>(fresh.param("v", "density")), "degeneracy");
 }
 
 TEST(NodeMigrations, PointConstraintsOfTypeVersion1KeepTheirSupport) {
