@@ -52,6 +52,28 @@ void BM_LocateMillion(benchmark::State& state) {
   state.counters["inside"] = double(inside);
 }
 
+/// A few points without the grid (core::locateByScan): one pass over the tets per call.
+/// Compare with BM_LocatorBuild + the grid's per-point cost to find the break-even count.
+void BM_LocateByScan(benchmark::State& state) {
+  const auto& mesh = sphere();
+  const std::vector<core::Vec3> points = randomPoints(static_cast<std::size_t>(state.range(0)));
+  for (auto _ : state) {
+    const auto hits = core::locateByScan(*mesh, points);
+    benchmark::DoNotOptimize(hits.data());
+  }
+  state.counters["points"] = double(points.size());
+}
+
+BENCHMARK(BM_LocateByScan)
+    ->Arg(1)
+    ->Arg(4)
+    ->Arg(16)
+    ->Arg(64)
+    ->Arg(256)
+    ->Arg(1024)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(5)
+    ->UseRealTime();
 BENCHMARK(BM_LocatorBuild)->Unit(benchmark::kMillisecond)->Iterations(3);
 BENCHMARK(BM_LocateMillion)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->Iterations(3);
 

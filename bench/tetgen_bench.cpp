@@ -6,6 +6,7 @@
 // Run: build-<dir>/bench/tetgen_bench --benchmark_counters_tabular=true
 // Results and machine notes: bench/RESULTS.md.
 #include <benchmark/benchmark.h>
+#include <tbb/global_control.h>
 
 #include <chrono>
 #include <ctime>
@@ -81,6 +82,37 @@ void BM_TetgenSphere(benchmark::State& state) {
   state.counters["peak_MB"] = peak;
 }
 
+/// The TetMesh constructor alone (validation, incidence, edges, faces, boundary, volumes) on
+/// TetGen's 1M-tet sphere, 1 and 2 threads; the copy of the input arrays is not timed.
+void BM_TetMeshTopology(benchmark::State& state) {
+  static const auto sphere = [] {
+    tfd::io::TetgenOptions options;
+    options.targetTets = 1e6;
+    return tfd::io::tetrahedralize(tfd::core::makePrimitiveForTets(tfd::core::PrimitiveSpec{}, 1e6),
+                                   options);
+  }();
+  tbb::global_control threads(tbb::global_control::max_allowed_parallelism,
+                              static_cast<std::size_t>(state.range(0)));
+  std::size_t faces = 0;
+  for (auto _ : state) {
+    state.PauseTiming();
+    auto positions = sphere->positions();
+    auto tets = sphere->tets();
+    state.ResumeTiming();
+    const tfd::core::TetMesh mesh(std::move(positions), std::move(tets));
+    faces = mesh.faces().size();
+    benchmark::DoNotOptimize(&mesh);
+  }
+  state.counters["tets"] = double(sphere->tetCount());
+  state.counters["faces"] = double(faces);
+}
+
+BENCHMARK(BM_TetMeshTopology)
+    ->Arg(1)
+    ->Arg(2)
+    ->Iterations(5)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK(BM_TetgenSphere)
     ->Arg(150'000)
     ->Arg(500'000)

@@ -2,6 +2,7 @@
 // Tetrahedral mesh with its derived topology, built once and shared (paper section 4).
 #include <Eigen/Dense>
 #include <array>
+#include <atomic>
 #include <memory>
 #include <mutex>
 #include <span>
@@ -19,7 +20,8 @@ class PointLocator;
 /// sorted ascending, lists sorted lexicographically, so numbering depends only on the input),
 /// the one or two tets of each face, boundary faces and vertices, area-weighted outward
 /// boundary normals, vertex-to-tet incidence and tet volumes. Build work runs in parallel and is
-/// deterministic for any thread count.
+/// deterministic for any thread count: edges and faces are grouped by their lowest vertex
+/// (core/tet_mesh_topology.cpp), which gives the same numbering as one global sort.
 class TetMesh {
  public:
   using Tet = std::array<int, 4>;
@@ -80,9 +82,17 @@ class TetMesh {
   Eigen::Vector4d barycentric(int t, const Vec3& p) const;
   /// Point location structure, built on first use (thread-safe) and kept with the mesh.
   const PointLocator& locator() const;
+  /// Whether locator() has been built already (core::locatePoints() then uses it).
+  bool hasLocator() const { return locatorBuilt_.load(std::memory_order_acquire); }
 
  private:
-  void buildTopology();
+  // Construction steps (core/tet_mesh_topology.cpp). The checks return false at the first
+  // problem; throwInvalid() then lists every problem with validate().
+  bool quickCheckAndVolumes();
+  bool buildIncidence();
+  bool buildEdgesAndFaces();
+  void buildSummaries();
+  [[noreturn]] void throwInvalid() const;
   void buildBoundary();
 
   std::vector<Vec3> positions_;
@@ -104,6 +114,7 @@ class TetMesh {
   Vec3 boundsMin_ = Vec3::Zero(), boundsMax_ = Vec3::Zero();
   mutable std::unique_ptr<PointLocator> locator_;
   mutable std::once_flag locatorOnce_;
+  mutable std::atomic<bool> locatorBuilt_ = false;
 };
 
 /// Signed volume of the tet (a, b, c, d): positive when positively oriented.

@@ -19,10 +19,9 @@ std::string describe(int index, const Vec3& p) {
   return out.str();
 }
 
-}  // namespace
-
-void applyPointElement(const TetMesh& mesh, const PointElement& element, int index,
-                       FixedValueAccumulator& accumulator) {
+void applyLocatedPointElement(const TetMesh& mesh, const PointElement& element, int index,
+                              const std::optional<TetLocation>& location,
+                              FixedValueAccumulator& accumulator) {
   const Vec3& origin = element.field.origin;
   if (!origin.allFinite()) throw Error(describe(index, origin) + ": position is not finite");
   if (!std::isfinite(element.radius) || element.radius < 0)
@@ -34,7 +33,6 @@ void applyPointElement(const TetMesh& mesh, const PointElement& element, int ind
       if (!std::isfinite(c)) throw Error(describe(index, origin) + ": Jacobian is not finite");
   for (double c : element.field.value.components())
     if (!std::isfinite(c)) throw Error(describe(index, origin) + ": tensor value is not finite");
-  const auto location = mesh.locator().locate(origin);
   if (!location)
     throw Error(describe(index, origin) + " is outside the mesh (bounds " + [&] {
       std::ostringstream b;
@@ -69,10 +67,38 @@ void applyPointElement(const TetMesh& mesh, const PointElement& element, int ind
   }
 }
 
+/// Where each point element's origin is (non-finite origins stay unlocated: the element's own
+/// checks report them). A few points are found by one scan over the tets, so a first cook
+/// does not pay for the mesh's point-location grid (core::locatePoints).
+std::vector<std::optional<TetLocation>> locateOrigins(const TetMesh& mesh,
+                                                      const std::vector<PointElement>& points) {
+  std::vector<Vec3> origins;
+  std::vector<std::size_t> which;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (!points[i].field.origin.allFinite()) continue;
+    origins.push_back(points[i].field.origin);
+    which.push_back(i);
+  }
+  const auto found = locatePoints(mesh, origins);
+  std::vector<std::optional<TetLocation>> out(points.size());
+  for (std::size_t k = 0; k < which.size(); ++k) out[which[k]] = found[k];
+  return out;
+}
+
+}  // namespace
+
+void applyPointElement(const TetMesh& mesh, const PointElement& element, int index,
+                       FixedValueAccumulator& accumulator) {
+  applyLocatedPointElement(mesh, element, index, locateOrigins(mesh, {element}).front(),
+                           accumulator);
+}
+
 FixedValues applyConstraints(const TetMesh& mesh, const ConstraintSet& constraints) {
   FixedValueAccumulator accumulator(mesh.vertexCount());
+  const auto locations = locateOrigins(mesh, constraints.points);
   for (std::size_t i = 0; i < constraints.points.size(); ++i)
-    applyPointElement(mesh, constraints.points[i], static_cast<int>(i), accumulator);
+    applyLocatedPointElement(mesh, constraints.points[i], static_cast<int>(i), locations[i],
+                             accumulator);
   for (std::size_t i = 0; i < constraints.curves.size(); ++i) {
     try {
       applyCurveElement(mesh, constraints.curves[i], accumulator);
