@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <new>
 
 #include "core/memory_budget.h"
 
@@ -13,15 +14,25 @@ namespace tfd::fuzz {
 
 namespace {
 
-std::filesystem::path scratchFolder() {
-  static const std::filesystem::path folder = [] {
+void removeScratchFolder();
+
+/// A per-process folder, removed at exit (libFuzzer ends with exit()). Never destroyed, so the
+/// exit handler may still read it.
+const std::filesystem::path& scratchFolder() {
+  static const auto* folder = [] {
     const char* tmp = std::getenv("TMPDIR");
-    std::filesystem::path p = std::filesystem::path(tmp && *tmp ? tmp : "/tmp") /
-                              ("tfd-fuzz-" + std::to_string(::getpid()));
-    std::filesystem::create_directories(p);
+    auto* p = new std::filesystem::path(std::filesystem::path(tmp && *tmp ? tmp : "/tmp") /
+                                        ("tfd-fuzz-" + std::to_string(::getpid())));
+    std::filesystem::create_directories(*p);
+    std::atexit(removeScratchFolder);
     return p;
   }();
-  return folder;
+  return *folder;
+}
+
+void removeScratchFolder() {
+  std::error_code ignored;
+  std::filesystem::remove_all(scratchFolder(), ignored);
 }
 
 }  // namespace
@@ -74,3 +85,52 @@ void useSmallMemoryBudget() {
 }
 
 }  // namespace tfd::fuzz
+
+// The fuzz targets' stand-in for the address-space cap `tfd` sets from its memory budget
+// (core/memory_budget.h). AddressSanitizer reserves its shadow memory, so no cap can be set
+// under it, and its operator new aborts ("out-of-memory") where the released binary throws
+// std::bad_alloc, which our readers turn into an error naming the file. So new and delete go
+// through malloc and free here: with allocator_may_return_null, an allocation above the
+// targets' 256 MB budget returns null and new throws, as under the cap. ASAN_OPTIONS still
+// overrides each flag.
+extern "C" const char* __asan_default_options() {
+  return "allocator_may_return_null=1:max_allocation_size_mb=256";
+}
+
+namespace {
+
+void* allocateOrThrow(std::size_t size, std::size_t alignment = 0) {
+  if (size == 0) size = 1;
+  void* p = alignment > alignof(std::max_align_t)
+                ? std::aligned_alloc(alignment, (size + alignment - 1) / alignment * alignment)
+                : std::malloc(size);
+  if (!p) throw std::bad_alloc();
+  return p;
+}
+
+}  // namespace
+
+void* operator new(std::size_t size) { return allocateOrThrow(size); }
+void* operator new[](std::size_t size) { return allocateOrThrow(size); }
+void* operator new(std::size_t size, std::align_val_t a) {
+  return allocateOrThrow(size, std::size_t(a));
+}
+void* operator new[](std::size_t size, std::align_val_t a) {
+  return allocateOrThrow(size, std::size_t(a));
+}
+void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
+  return std::malloc(size ? size : 1);
+}
+void* operator new[](std::size_t size, const std::nothrow_t&) noexcept {
+  return std::malloc(size ? size : 1);
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+void operator delete(void* p, std::align_val_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::align_val_t) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
+void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
+void operator delete[](void* p, const std::nothrow_t&) noexcept { std::free(p); }

@@ -1,12 +1,16 @@
 #include "io/volume/vdb_reader.h"
 
+#include <openvdb/io/Stream.h>
 #include <openvdb/openvdb.h>
 
+#include <fstream>
+#include <ios>
 #include <new>
 
 #include "core/error.h"
 #include "core/memory_budget.h"
 #include "io/text_scanner.h"
+#include "io/volume/vdb_layout_check.h"
 #include "io/volume/vdb_support.h"
 
 namespace tfd::io {
@@ -73,6 +77,17 @@ void checkAnnouncedSizes(openvdb::io::File& file, const std::string& name, bool 
   }
 }
 
+/// The grids, read through a stream that throws at the first read past the end of the file.
+/// OpenVDB's tree readers loop over counts from the file without looking at the stream state
+/// (RootNode::readTopology and its tile count), so a damaged count would keep them reading
+/// nothing for minutes; with the exception a damaged file ends where its bytes end.
+openvdb::GridPtrVecPtr readGridsStrictly(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  in.exceptions(std::ios::failbit | std::ios::badbit | std::ios::eofbit);
+  openvdb::io::Stream stream(in, /*delayLoad=*/false);
+  return stream.getGrids();
+}
+
 /// An OpenVDB exception's text without its class prefix ("KeyError: ..."), printable.
 std::string openVdbReason(const openvdb::Exception& e) {
   std::string text = e.what();
@@ -80,6 +95,11 @@ std::string openVdbReason(const openvdb::Exception& e) {
       colon != std::string::npos && colon < 24 && text.compare(colon - 5, 5, "Error") == 0)
     text = text.substr(colon + 2);
   if (text.empty()) text = "no reason given";
+  // A damaged name can make OpenVDB's message hundreds of megabytes long (a grid type of
+  // announced length, mostly unread): quote its start only.
+  constexpr std::size_t kQuoted = 200;
+  if (text.size() > kQuoted)
+    text = text.substr(0, kQuoted) + "... (" + std::to_string(text.size()) + " characters)";
   return "the file is damaged or not an OpenVDB file (OpenVDB: " + printableText(text) + ")";
 }
 
@@ -89,12 +109,13 @@ VdbFileData readVdbFile(const std::filesystem::path& path, bool withValues) {
   initializeOpenVdb();
   VdbFileData data;
   try {
+    checkVdbLayout(path);
     openvdb::io::File file(path.string());
     file.open(false);  // read everything now; the file is closed at the end of this scope
     data.fileMetadata = metadataText(*file.getMetadata());
     checkAnnouncedSizes(file, path.string(), withValues);
-    const openvdb::GridPtrVecPtr grids = file.getGrids();
     file.close();
+    const openvdb::GridPtrVecPtr grids = readGridsStrictly(path);
     for (const auto& grid : *grids) {
       VdbGridData g;
       g.name = grid->getName();
@@ -129,6 +150,9 @@ VdbFileData readVdbFile(const std::filesystem::path& path, bool withValues) {
     throw;
   } catch (const openvdb::Exception& e) {
     throw core::Error("cannot read VDB file '" + path.string() + "': " + openVdbReason(e));
+  } catch (const std::ios_base::failure&) {
+    throw core::Error("cannot read VDB file '" + path.string() +
+                      "': the file is damaged (it ends inside what it announces)");
   } catch (const std::bad_alloc&) {
     throw core::Error("cannot read VDB file '" + path.string() +
                       "': it asks for more memory than can be allocated (a damaged file?)");

@@ -124,7 +124,8 @@ class VtuReader {
 
  private:
   [[noreturn]] void fail(const XmlElement& e, const std::string& message) const {
-    throw core::Error("file '" + file_ + "', line " + std::to_string(e.line) + ": " + message);
+    throw core::Error("file '" + file_ + "', line " + std::to_string(e.line) + ": " +
+                      printableText(message));
   }
 
   long long countAttribute(const XmlElement& e, const char* key) const {

@@ -169,6 +169,20 @@ TEST_F(TetMeshErrors, VtuProblems) {
   EXPECT_NE(m.find("binary data ends early: needs 96 bytes"), std::string::npos) << m;
 }
 
+// Found by fuzz_read_vtu: attribute values (here a DataArray format) were echoed raw.
+TEST_F(TetMeshErrors, VtuAttributeValuesAreQuotedPrintably) {
+  const std::string m = error([&] {
+    readVtu(file("f.vtu",
+                 "<VTKFile type=\"UnstructuredGrid\"><UnstructuredGrid>"
+                 "<Piece NumberOfPoints=\"4\" NumberOfCells=\"1\"><Points>"
+                 "<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"asc\x1bi\">"
+                 "0 0 0 1 0 0 0 1 0 0 0 1</DataArray></Points></Piece></UnstructuredGrid>"
+                 "</VTKFile>\n"));
+  });
+  EXPECT_NE(m.find("unknown DataArray format \"asc\\x1bi\""), std::string::npos) << m;
+  EXPECT_EQ(m.find('\x1b'), std::string::npos) << m;
+}
+
 TEST_F(TetMeshErrors, FailedWriteLeavesNoFile) {
   const auto mesh = core::makeBoxMesh(1, 1, 1, core::Vec3(0, 0, 0), core::Vec3(1, 1, 1));
   file("blocker", "a regular file where a folder should be");

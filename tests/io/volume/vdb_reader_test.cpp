@@ -1,0 +1,58 @@
+// Reading damaged OpenVDB files (issue 15): each ends in core::Error naming the file, quickly.
+#include "io/volume/vdb_reader.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <filesystem>
+
+#include "core/error.h"
+
+namespace tfd {
+namespace {
+
+// A 1375-byte file (found by fuzz_info_vdb, its grid positions then made to fit the file)
+// whose tree announces about four billion root tiles. OpenVDB's RootNode::readTopology loops over
+// the count without looking at the stream, so the reader spun for 30 s (over a minute under ASan)
+// before failing; the reader's stream now throws at the first read past the end of the file.
+TEST(VdbReader, ACountBeyondTheFileEndsAtTheEndOfTheFile) {
+  const std::filesystem::path file =
+      std::filesystem::path(TFD_TEST_DATA_DIR) / "damaged" / "vdb_huge_root_count.vdb";
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    io::readVdbFile(file, /*withValues=*/false);
+    FAIL() << "a damaged file was read";
+  } catch (const core::Error& e) {
+    EXPECT_NE(std::string(e.what()).find("vdb_huge_root_count.vdb"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("ends inside"), std::string::npos) << e.what();
+  }
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_LT(seconds, 5.0) << "the damaged count was followed";
+}
+
+// Files (found by fuzz_info_vdb) announcing a 150 MB grid type in 734 bytes and a 2 GB
+// metadata name in 10 KB. OpenVDB allocates what a string announces and copies it into its
+// messages: the first kept `tfd info` busy for 9 s and printed 150 MB of spaces. Every size
+// the header, metadata and grid descriptors announce is now checked against the file first.
+TEST(VdbReader, SizesBeyondTheFileAreRefusedBeforeOpenVdbReadsThem) {
+  for (const char* name : {"vdb_huge_grid_type.vdb", "vdb_huge_metadata_name.vdb"}) {
+    const std::filesystem::path file = std::filesystem::path(TFD_TEST_DATA_DIR) / "damaged" / name;
+    const auto start = std::chrono::steady_clock::now();
+    try {
+      io::readVdbFile(file, /*withValues=*/false);
+      FAIL() << name << " was read";
+    } catch (const core::Error& e) {
+      const std::string m = e.what();
+      EXPECT_LT(m.size(), 400u) << m.substr(0, 1000);
+      EXPECT_NE(m.find(std::string(name) + "': the file is damaged ("), std::string::npos) << m;
+      EXPECT_NE(m.find(" bytes)"), std::string::npos) << m;
+    }
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_LT(seconds, 1.0) << name;
+  }
+}
+
+}  // namespace
+}  // namespace tfd
