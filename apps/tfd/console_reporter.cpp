@@ -71,12 +71,18 @@ std::string ConsoleReporter::describe(const std::string& node, const Running& r,
     std::snprintf(text, sizeof text, "  %.1f s", elapsed);
     out += text;
   }
-  if (r.fraction > 0.02 && r.fraction < 1.0) {  // an estimate once a fraction is reported
-    const double left = elapsed * (1.0 - r.fraction) / r.fraction;
+  if (live(r, now)) {
+    const double rate = (r.fraction - r.firstFraction) / secondsBetween(r.firstReport, now);
+    const double left = (1.0 - r.fraction) / rate;
     std::snprintf(text, sizeof text, ", about %.0f s left", std::ceil(left));
     out += text;
   }
   return out;
+}
+
+bool ConsoleReporter::live(const Running& r, Clock::time_point now) {
+  return r.fraction > r.firstFraction && r.fraction < 1.0 &&
+         now - r.lastChange < std::chrono::seconds(3) && now > r.firstReport;
 }
 
 void ConsoleReporter::cookStarted(std::size_t requested, std::size_t) {
@@ -91,7 +97,11 @@ void ConsoleReporter::nodeStarted(const std::string& node, const std::string& ty
   if (mode_ == Mode::Quiet) return;
   std::lock_guard lock(mutex_);
   const auto now = Clock::now();
-  running_[node] = Running{type, {}, 0, now, now, ++started_};
+  Running r;
+  r.type = type;
+  r.start = r.lastLine = now;
+  r.order = ++started_;
+  running_[node] = std::move(r);
   if (mode_ == Mode::Lines)
     out_ << "start " << node << " (" << type << ")\n" << std::flush;
   else
@@ -104,8 +114,15 @@ void ConsoleReporter::nodeProgress(const std::string& node, double fraction,
   std::lock_guard lock(mutex_);
   auto it = running_.find(node);
   if (it == running_.end()) return;
-  it->second.fraction = fraction;
-  it->second.stage = std::string(stage);
+  Running& r = it->second;
+  const auto now = Clock::now();
+  if (r.firstReport == Clock::time_point{}) {
+    r.firstReport = now;
+    r.firstFraction = fraction;
+  }
+  if (fraction != r.fraction) r.lastChange = now;
+  r.fraction = fraction;
+  r.stage = std::string(stage);
   if (mode_ == Mode::Bar) drawBar(false);
 }
 
@@ -142,7 +159,7 @@ void ConsoleReporter::drawBar(bool force) {
   const double overall = total_ == 0 ? 1.0 : (static_cast<double>(done_) + partial) / total_;
   shown_ = std::max(shown_, std::min(overall, 1.0));
   std::string bar(static_cast<std::size_t>(shown_ * kWidth + 0.5), '=');
-  if (current && current->fraction <= 0 && bar.size() < kWidth)
+  if (current && !live(*current, now) && bar.size() < kWidth)
     bar += "|/-\\"[spin_ % 4];  // the spinner: a step that reports no fraction
   bar.resize(kWidth, ' ');
   std::string what = current ? describe(*label, *current, now, false) : std::string();

@@ -3,8 +3,11 @@
 //
 //   Bar (stderr is a terminal): one redrawn line that always names the node running, e.g.
 //       [=======>     ] 4/12 field (Propagate) 42% solving  3.1 s, about 4 s left
-//       [ |           ] 1/12 ball (TetMesh) 6.4 s            <- a spinner while a step
+//       [ |           ] 1/12 ball (TetMesh) 5% TetGen  6.4 s  <- a spinner while a step
 //                                                               reports no fraction (TetGen)
+//     An estimate of the time left is shown only while the fraction moves (it changed in the
+//     last 3 s), from its rate since the node's first report; a step that reports one fraction
+//     and then nothing for long (TetGen) gets the spinner instead.
 //     redrawn at least every 0.1 s by a ticker thread, so the spinner and the time move even
 //     while a node reports nothing.
 //   Lines (not a terminal: logs, CI): one line per node start and end and, while a node runs
@@ -49,11 +52,13 @@ class ConsoleReporter : public graph::CookObserver {
  private:
   struct Running {
     std::string type, stage;
-    double fraction = 0;
-    Clock::time_point start, lastLine;
+    double fraction = 0, firstFraction = 0;
+    Clock::time_point start, lastLine, firstReport, lastChange;
     std::uint64_t order = 0;  ///< start order: the label names the latest one
   };
   void tick();
+  /// The fraction moved lately: an estimate makes sense.
+  static bool live(const Running& r, Clock::time_point now);
   void drawBar(bool force);
   std::string describe(const std::string& node, const Running& r, Clock::time_point now,
                        bool forLine) const;

@@ -153,7 +153,9 @@ TEST_F(CookManifest, WithoutATerminalALinePerNodeStartAndEndAndWhileALongStepRun
     if (line.rfind("tfd: ", 0) != 0) progress.push_back(line);
   ASSERT_GE(progress.size(), 4u) << r.err;
   EXPECT_EQ(progress.front(), "start m (TetMesh)");
-  const std::regex running(R"(^\.\.\. m \(TetMesh\) running \d+ s$)");
+  // TetMesh says "5% TetGen" as TetGen starts, then nothing until it ends: no estimate from a
+  // fraction that does not move.
+  const std::regex running(R"(^\.\.\. m \(TetMesh\) running \d+ s(, \d+% TetGen)?$)");
   for (std::size_t i = 1; i + 1 < progress.size(); ++i)
     EXPECT_TRUE(std::regex_match(progress[i], running)) << progress[i];
   EXPECT_GE(progress.size() - 2, 3u) << "a line every 0.2 s of a 1 s step: " << r.err;
