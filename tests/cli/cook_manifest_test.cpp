@@ -4,11 +4,13 @@
 // long step, repeats a line while it runs.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <regex>
+#include <set>
 #include <sstream>
 
 #include "core/surface/primitives.h"
@@ -163,6 +165,32 @@ TEST_F(CookManifest, WithoutATerminalALinePerNodeStartAndEndAndWhileALongStepRun
                                std::regex(R"(^\[1/1\] failed m \(TetMesh\) \d+\.\d{3} s$)")))
       << progress.back();
   EXPECT_EQ(manifestIn(dir.path())["failed"][0]["node"], "m");
+}
+
+TEST_F(CookManifest, OnATerminalTheBarNamesTheRunningNodeWithASpinnerAndItsTime) {
+  if (std::system("command -v script >/dev/null 2>&1") != 0) GTEST_SKIP() << "no script(1)";
+  writeFarVertexSphere(dir.path() / "far.obj");
+  ordered_json g = {{"format", "tfd-graph"}, {"formatVersion", 2}};
+  g["nodes"] = {
+      {"m", node("TetMesh", {{"file", "far.obj"}, {"target_tets", 300}, {"time_limit", 0.8}})}};
+  g["links"] = ordered_json::array();
+  write(g);
+  // script(1) runs tfd on a pseudo-terminal, so stderr is a TTY.
+  const fs::path typescript = dir.path() / "tty.txt";
+  const std::string command = std::string(TFD_CLI_PATH) + " cook " + shellQuote(graph.string());
+  const std::string run = "script -qec " + shellQuote(command) + " /dev/null >" +
+                          shellQuote(typescript.string()) + " 2>&1 </dev/null";
+  (void)std::system(run.c_str());
+  const std::string text = bytesOf(typescript);
+  // Redrawn lines "\r\033[K[<bar>] 0/1 m (TetMesh) 5% TetGen  0.3 s": the running node, a
+  // spinner in the bar while TetGen reports no fraction, and the elapsed time.
+  const std::regex bar(R"(\r\x1b\[K\[([= |/\\-]*)\] 0/1 m \(TetMesh\)( 5% TetGen)?  \d+\.\d s)");
+  std::set<std::string> spinners;
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), bar); it != std::sregex_iterator();
+       ++it)
+    spinners.insert((*it)[1].str());
+  EXPECT_GE(spinners.size(), 3u) << "the spinner turns while nothing is reported:\n" << text;
+  EXPECT_FALSE(has(text, "left")) << "no estimate from a fraction that does not move";
 }
 
 }  // namespace
