@@ -25,6 +25,7 @@ struct CookPlan {
   std::vector<std::vector<std::vector<Link>>> incoming;  ///< per node, per input port
   std::vector<NodeReport> reports;                       ///< per node (needed ones filled)
   std::vector<bool> toCook;                              ///< needed and not a valid cache hit
+  std::vector<bool> diskPending;                         ///< cached on disk, values not read yet
   std::vector<int> waitingOn;  ///< per node to cook: how many nodes to cook it depends on
   std::vector<std::vector<int>> dependents;  ///< per node to cook: nodes to cook that need it
   std::size_t requested = 0, cached = 0;

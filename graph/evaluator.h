@@ -26,6 +26,11 @@
 // of those files is missing or its size or modification time differs; otherwise the files are
 // left alone (not rewritten).
 //
+// On-disk cache (CookOptions::diskCache): gather also looks a missing key up on disk (entry
+// description only); before running, in reverse topological order, the values of disk hits
+// that a node to cook needs are read; one that cannot be read (damaged) is cooked instead,
+// which may in turn need its own inputs. Store writes every cooked node with codecs to disk.
+//
 // Cancellation: set *CookOptions::cancel. Nodes not yet started are skipped, a running node
 // sees CookContext::cancelFlag(); any node that finishes (normally or by throwing) while the
 // flag is set is marked Cancelled and its outputs are discarded, so the cache never holds a
@@ -46,6 +51,8 @@
 
 namespace tfd::graph {
 
+class DiskCache;
+
 enum class NodeState {
   NotRequested,    ///< outside the requested nodes' upstream closure
   Cooked,          ///< cook ran and succeeded
@@ -63,13 +70,16 @@ struct NodeReport {
   std::vector<NodeMessage> messages;  ///< for Cached: the messages of the cook that produced it
   double seconds = 0;                 ///< wall time of this cook (Cached: of the original cook)
   bool cookCalled = false;            ///< the node's cook function ran in this cook
+  bool fromDisk = false;  ///< Cached: taken from CookOptions::diskCache, not from memory
   Hash key;
   std::string failedNode;  ///< UpstreamFailed: the (first) node whose failure reached here
   /// Side-effect nodes. Cooked: the files this cook wrote, in the order the node reported
   /// them. Cached: the files of the cook that produced the entry, found unchanged on disk.
   std::vector<FileStamp> files;
-  bool filesChanged = false;       ///< cooked although cached: a file it had written was changed
-  std::vector<Value> outputs;      ///< Cooked/Cached: in declaration order
+  bool filesChanged = false;  ///< cooked although cached: a file it had written was changed
+  /// Cooked/Cached: in declaration order. A node cached on disk whose values no cooked node
+  /// needed is not loaded: its outputs stay empty.
+  std::vector<Value> outputs;
   const NodeDecl* decl = nullptr;  ///< the node type's declaration (owned by the registry)
 
   bool hasError() const { return state == NodeState::Failed || state == NodeState::UpstreamFailed; }
@@ -129,6 +139,10 @@ struct CookOptions {
   CookObserver* observer = nullptr;
   bool hashInputFileStamps = true;  ///< input files' size and mtime feed the cache key
   bool parallel = true;             ///< false: one node at a time, in topological order
+  /// On-disk cache (disk_cache.h) consulted after the in-memory one: a node found there is
+  /// Cached (fromDisk), and its values are read only when a node that cooks needs them; a
+  /// damaged entry is a miss. Cooked nodes are written to it, then it is trimmed to its budget.
+  DiskCache* diskCache = nullptr;
 };
 
 class Evaluator {

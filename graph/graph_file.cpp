@@ -16,6 +16,15 @@ namespace tfd::graph {
 
 namespace {
 
+/// Where loading puts its problems: null throws the first one (loadGraphFile), else each is
+/// recorded and loading goes on (loadGraphFileCollecting).
+using Problems = std::vector<LoadProblem>;
+
+void record(Problems* problems, const LoadError& e, std::string node, std::string parameter = {}) {
+  if (!problems) throw e;
+  problems->push_back({e.pointer(), std::move(node), std::move(parameter), e.message()});
+}
+
 std::string keyList(std::initializer_list<const char*> keys) {
   std::string out;
   for (const char* k : keys) out += (out.empty() ? "" : ", ") + std::string(k);
@@ -40,7 +49,8 @@ std::string names(const C& items) {
   return out.empty() ? "none" : out;
 }
 
-void loadNode(Graph& graph, const std::string& name, const Json& j, const std::string& source) {
+void loadNode(Graph& graph, const std::string& name, const Json& j, const std::string& source,
+              Problems* problems) {
   const std::string where = pointerJoin("/nodes", name);
   if (!Graph::isValidNodeName(name))
     throw LoadError(source, where,
@@ -99,14 +109,18 @@ void loadNode(Graph& graph, const std::string& name, const Json& j, const std::s
   for (const auto& [key, value] : params.items()) {
     const std::string at = pointerJoin(where + "/params", key);
     const ParamDecl* p = decl.findParam(key);
-    if (!p)
-      throw LoadError(source, at,
-                      "unknown parameter \"" + key + "\" of node type " + typeName +
-                          " (parameters: " + names(decl.params()) + ")");
+    if (!p) {
+      record(problems,
+             LoadError(source, at,
+                       "unknown parameter \"" + key + "\" of node type " + typeName +
+                           " (parameters: " + names(decl.params()) + ")"),
+             name, key);
+      continue;
+    }
     try {
       graph.setParam(name, key, paramFromJson(*p, value));
     } catch (const GraphError& e) {
-      throw LoadError(source, at, e.what());
+      record(problems, LoadError(source, at, e.what()), name, key);
     }
   }
   if (j.contains("ui")) {
@@ -116,7 +130,8 @@ void loadNode(Graph& graph, const std::string& name, const Json& j, const std::s
   }
 }
 
-void loadLink(Graph& graph, const Json& j, std::size_t index, const std::string& source) {
+void loadLink(Graph& graph, const Json& j, std::size_t index, const std::string& source,
+              const std::vector<std::string>& skippedNodes) {
   const std::string where = pointerJoin("/links", index);
   if (!j.is_object())
     throw LoadError(
@@ -137,6 +152,8 @@ void loadLink(Graph& graph, const Json& j, std::size_t index, const std::string&
     } catch (const GraphError& err) {
       throw LoadError(source, at, err.what());
     }
+    for (const std::string& skipped : skippedNodes)
+      if (ends[k].node == skipped) return;  // its node did not load: already reported
     if (auto why = graph.checkEndpoint(ends[k], k == 0)) throw LoadError(source, at, *why);
   }
   try {
@@ -146,9 +163,15 @@ void loadLink(Graph& graph, const Json& j, std::size_t index, const std::string&
   }
 }
 
-}  // namespace
+/// The node a link's problem concerns: its "to" node when that can be read.
+std::string linkNode(const Json& j) {
+  if (!j.is_object() || !j.contains("to") || !j["to"].is_string()) return {};
+  const std::string to = j["to"].get<std::string>();
+  return to.substr(0, to.find('.'));
+}
 
-Graph graphFromJson(const Json& input, const NodeRegistry& registry, const std::string& source) {
+Graph graphFromJsonImpl(const Json& input, const NodeRegistry& registry, const std::string& source,
+                        Problems* problems) {
   int originalVersion = 0;
   Json doc = migrateGraphDocument(input, source, &originalVersion);
   checkKeys(doc, {"format", "formatVersion", "generator", "nodes", "links"}, source, "");
@@ -161,12 +184,33 @@ Graph graphFromJson(const Json& input, const NodeRegistry& registry, const std::
   if (!doc["nodes"].is_object())
     throw LoadError(source, "/nodes",
                     "expected an object of nodes by name, found " + describeJson(doc["nodes"]));
-  for (const auto& [name, node] : doc["nodes"].items()) loadNode(graph, name, node, source);
+  std::vector<std::string> skipped;
+  for (const auto& [name, node] : doc["nodes"].items()) {
+    try {
+      loadNode(graph, name, node, source, problems);
+    } catch (const LoadError& e) {
+      record(problems, e, name);
+      if (graph.findNode(name)) graph.removeNode(name);
+      skipped.push_back(name);
+    }
+  }
   if (!doc.contains("links")) throw LoadError(source, "/links", "missing (use [] for none)");
   if (!doc["links"].is_array())
     throw LoadError(source, "/links", "expected an array, found " + describeJson(doc["links"]));
-  for (std::size_t i = 0; i < doc["links"].size(); ++i) loadLink(graph, doc["links"][i], i, source);
+  for (std::size_t i = 0; i < doc["links"].size(); ++i) {
+    try {
+      loadLink(graph, doc["links"][i], i, source, skipped);
+    } catch (const LoadError& e) {
+      record(problems, e, linkNode(doc["links"][i]));
+    }
+  }
   return graph;
+}
+
+}  // namespace
+
+Graph graphFromJson(const Json& input, const NodeRegistry& registry, const std::string& source) {
+  return graphFromJsonImpl(input, registry, source, nullptr);
 }
 
 Graph parseGraph(std::string_view text, const NodeRegistry& registry, const std::string& source) {
@@ -190,6 +234,22 @@ std::string readTextFile(const std::filesystem::path& path) {
   buffer << in.rdbuf();
   if (in.bad()) throw LoadError(path.string(), "", "cannot read: I/O error");
   return buffer.str();
+}
+
+std::optional<Graph> loadGraphFileCollecting(const std::filesystem::path& path,
+                                             const NodeRegistry& registry,
+                                             std::vector<LoadProblem>& problems) {
+  try {
+    const Json json = parseJsonText(readTextFile(path), path.string());
+    Graph graph = graphFromJsonImpl(json, registry, path.string(), &problems);
+    graph.setSourcePath(path);
+    return graph;
+  } catch (const LoadError& e) {  // the document itself
+    problems.push_back({e.pointer(), {}, {}, e.message()});
+  } catch (const std::exception& e) {
+    problems.push_back({{}, {}, {}, printableText(e.what())});
+  }
+  return std::nullopt;
 }
 
 Graph loadGraphFile(const std::filesystem::path& path, const NodeRegistry& registry) {

@@ -12,8 +12,10 @@
 // parameters that differ from their default, in declaration order; so save -> load -> save is
 // byte-identical.
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "graph/graph.h"
 #include "graph/json_fwd.h"
@@ -26,6 +28,23 @@ Graph parseGraph(std::string_view text, const NodeRegistry& registry, const std:
 /// Reads a file; the graph's sourcePath() is set to `path`. A missing or unreadable file is a
 /// LoadError too.
 Graph loadGraphFile(const std::filesystem::path& path, const NodeRegistry& registry);
+
+/// One problem found by loadGraphFileCollecting.
+struct LoadProblem {
+  std::string pointer;    ///< JSON pointer of the place in the file ("" for the whole file)
+  std::string node;       ///< the node concerned (a link's: its "to" node); empty when none
+  std::string parameter;  ///< the parameter concerned; empty when none
+  std::string message;
+};
+/// Like loadGraphFile, but goes on after a problem and records each one (file order): a node
+/// that cannot be made (unknown type or key, bad typeVersion) is left out with its links; a
+/// bad or unknown parameter keeps its default; a bad link (unknown node or port, type
+/// mismatch, second link into a single input, cycle) is dropped. Nothing is returned only when
+/// the document itself cannot be read (unreadable, not JSON, not a graph, newer format); then
+/// `problems` holds that one.
+std::optional<Graph> loadGraphFileCollecting(const std::filesystem::path& path,
+                                             const NodeRegistry& registry,
+                                             std::vector<LoadProblem>& problems);
 
 /// The canonical JSON of the current format version.
 Json graphToJson(const Graph& graph);

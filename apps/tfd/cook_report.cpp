@@ -58,8 +58,12 @@ int printCookReport(const graph::CookResult& result, const ReportOptions& option
     return kNodeFailed;
   }
   if (!options.quiet) {
+    std::size_t fromDisk = 0;
+    for (const graph::NodeReport& r : result.reports) fromDisk += r.fromDisk;
     err << "tfd: cooked " << result.count(NodeState::Cooked) << " of " << result.reports.size()
-        << " nodes (" << result.count(NodeState::Cached) << " cached)\n";
+        << " nodes (" << result.count(NodeState::Cached) << " cached";
+    if (fromDisk > 0) err << ", " << fromDisk << " of them on disk";
+    err << ")\n";
   }
   return kOk;
 }

@@ -32,6 +32,22 @@ int main(int argc, char** argv) {
   cli::addInfoCommand(app, context, exitCode);
   cli::addUpgradeCommand(app, context, exitCode);
   cli::addRenderCommand(app, context, exitCode);
+  // CLI11 calls an unknown first word an unexpected argument; say what it is and what exists.
+  if (argc > 1 && argv[1][0] != '-') {
+    const std::string word = argv[1];
+    std::string names;
+    bool known = false;
+    const CLI::App& commands = app;
+    for (const CLI::App* sub : commands.get_subcommands([](const CLI::App*) { return true; })) {
+      known = known || sub->check_name(word);
+      names += (names.empty() ? "" : ", ") + sub->get_name();
+    }
+    if (!known) {
+      cli::printError("unknown command \"" + word + "\" (commands: " + names + ")");
+      std::cerr << "Run 'tfd --help' for usage.\n";
+      return cli::kUsage;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {  // --help, --version

@@ -120,7 +120,11 @@ TEST_F(StopSignals, TermCancelsLikeCtrlCEvenInsideTetgen) {
   EXPECT_NE(stderrText.find("cancelled m (TetMesh)"), std::string::npos) << stderrText;
   EXPECT_EQ(cookAndSignal({SIGINT}, seconds), 130) << stderrText;
   EXPECT_LT(seconds, 1.0);
-  EXPECT_EQ(dir.entries(), (std::vector<std::string>{"far.obj", "g.tfd.json"}));
+  // Nothing but the manifest, which says the cook was cancelled.
+  EXPECT_EQ(dir.entries(), (std::vector<std::string>{"far.obj", "g.tfd.json", "tfd-cook.json"}));
+  EXPECT_NE(slurp(dir.path() / "tfd-cook.json").find("\"status\": \"cancelled\""),
+            std::string::npos)
+      << slurp(dir.path() / "tfd-cook.json");
 }
 
 TEST_F(StopSignals, ASecondSignalStopsAtOnce) {
