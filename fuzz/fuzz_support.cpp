@@ -21,8 +21,12 @@ void removeScratchFolder();
 const std::filesystem::path& scratchFolder() {
   static const auto* folder = [] {
     const char* tmp = std::getenv("TMPDIR");
-    auto* p = new std::filesystem::path(std::filesystem::path(tmp && *tmp ? tmp : "/tmp") /
-                                        ("tfd-fuzz-" + std::to_string(::getpid())));
+    // A fixed-width name: messages quote the path, and coverage counts the characters a
+    // message loop visits, so a path whose length followed the pid would steer the mutations
+    // differently from run to run and break `scripts/fuzz --runs` determinism.
+    char name[32];
+    std::snprintf(name, sizeof name, "tfd-fuzz-%010ld", static_cast<long>(::getpid()));
+    auto* p = new std::filesystem::path(std::filesystem::path(tmp && *tmp ? tmp : "/tmp") / name);
     std::filesystem::create_directories(*p);
     std::atexit(removeScratchFolder);
     return p;

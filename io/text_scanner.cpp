@@ -76,14 +76,16 @@ void TextScanner::expectLineEnd(std::string_view what) {
   pos_ = before;
 }
 
+// Messages quote the file's text: printableText() here, once for every reader, so no quoted
+// line or token reaches a terminal raw (it leaves text that is already printable unchanged).
 void TextScanner::fail(const std::string& message) const {
   throw core::Error("file '" + fileName_ + "', line " + std::to_string(lineNumber_) + ": " +
-                    message);
+                    printableText(message));
 }
 
 void TextScanner::failAtEnd(const std::string& message) const {
-  throw core::Error("file '" + fileName_ + "': " + message + " (file ended at line " +
-                    std::to_string(lastLine_) + ")");
+  throw core::Error("file '" + fileName_ + "': " + printableText(message) +
+                    " (file ended at line " + std::to_string(lastLine_) + ")");
 }
 
 bool parseNumber(std::string_view token, double& value) {

@@ -134,6 +134,18 @@ TEST_F(TetMeshErrors, GmshSectionNamesAreQuotedPrintably) {
   EXPECT_EQ(m, "file '" + path("s.msh") + "': expected '$EndOdd\\x1b\\x07' (file ended at line 5)");
 }
 
+// Found by fuzz_read_gmsh in CI: a section end line with binary bytes was quoted raw in
+// "expected 4 node coordinates, found 1 before '$EndNode...'".
+TEST_F(TetMeshErrors, GmshTruncatedSectionQuotesItsEndLinePrintably) {
+  const std::string m = error([&] {
+    readGmsh(file("t.msh",
+                  "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n1 0 0 0\n"
+                  "$EndNode\xff\x01s\n"));
+  });
+  EXPECT_NE(m.find("found 1 before '$EndNode\\xff\\x01s'"), std::string::npos) << m;
+  EXPECT_EQ(m.find('\x01'), std::string::npos) << m;
+}
+
 TEST_F(TetMeshErrors, VtuProblems) {
   auto vtu = [](const std::string& types, const std::string& extraRoot = "") {
     return "<VTKFile type=\"UnstructuredGrid\"" + extraRoot +
