@@ -52,7 +52,7 @@ int describeMesh(const std::filesystem::path& file, std::ostream& out) {
 }
 
 int describeVdb(const std::filesystem::path& file, std::ostream& out) {
-  const io::VdbFileData data = io::readVdbFile(file, /*loadValues=*/false);
+  const io::VdbFileData data = io::readVdbMetadata(file);
   Rows rows{{"format", "OpenVDB volume"}, {"grids", std::to_string(data.grids.size())}};
   for (const auto& [key, value] : data.fileMetadata) rows.push_back({"metadata " + key, value});
   for (const io::VdbGridData& g : data.grids) {
@@ -61,8 +61,13 @@ int describeVdb(const std::filesystem::path& file, std::ostream& out) {
     if (g.valueType.starts_with("vec")) s << " (" << g.vectorType << ")";
     s << ", " << g.gridClass << ", voxel "
       << joined(std::array{g.voxelSize.x(), g.voxelSize.y(), g.voxelSize.z()});
-    s << ", " << g.activeVoxelCount << " active voxels";
-    if (g.activeVoxelCount > 0) s << " in " << boxText(g.activeMin, g.activeMax);
+    if (!g.activeVoxelsKnown) {
+      s << ", active voxels not recorded";
+    } else {
+      s << ", " << g.activeVoxelCount << " active voxels";
+      if (g.activeVoxelCount > 0 && g.activeMin[0] <= g.activeMax[0])
+        s << " in " << boxText(g.activeMin, g.activeMax);
+    }
     rows.push_back({"grid " + g.name, s.str()});
   }
   out << formatRows(rows);

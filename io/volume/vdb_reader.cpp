@@ -25,6 +25,15 @@ std::map<std::string, std::string> metadataText(const openvdb::MetaMap& meta) {
   return out;
 }
 
+/// A metadata entry of type T, or null when it is missing, of another type or empty (a damaged
+/// file can hold an entry without a value, where MetaMap::getMetadata would dereference null).
+template <class T>
+std::shared_ptr<const T> typedEntry(const openvdb::MetaMap& meta, const std::string& name) {
+  const openvdb::Metadata::ConstPtr entry = meta[name];
+  if (!entry || entry->typeName() != T::staticTypeName()) return nullptr;
+  return std::static_pointer_cast<const T>(entry);
+}
+
 std::array<double, 3> asArray(float v) { return {v, 0, 0}; }
 std::array<double, 3> asArray(double v) { return {v, 0, 0}; }
 std::array<double, 3> asArray(int v) { return {double(v), 0, 0}; }
@@ -67,9 +76,9 @@ void checkAnnouncedSizes(openvdb::io::File& file, const std::string& name, bool 
   for (const auto& grid : *grids) {
     const std::string what =
         "VDB file '" + name + "': grid '" + printableText(grid->getName()) + "'";
-    if (const auto bytes = grid->getMetadata<openvdb::Int64Metadata>("file_mem_bytes"))
+    if (const auto bytes = typedEntry<openvdb::Int64Metadata>(*grid, "file_mem_bytes"))
       core::checkMemory(double(bytes->value()), what + " (as the file announces)");
-    const auto voxels = grid->getMetadata<openvdb::Int64Metadata>("file_voxel_count");
+    const auto voxels = typedEntry<openvdb::Int64Metadata>(*grid, "file_voxel_count");
     if (withValues && voxels)
       core::checkMemory(double(voxels->value()) * sizeof(VdbGridData::Voxel),
                         what + "'s list of " + std::to_string(voxels->value()) +
@@ -103,49 +112,53 @@ std::string openVdbReason(const openvdb::Exception& e) {
   return "the file is damaged or not an OpenVDB file (OpenVDB: " + printableText(text) + ")";
 }
 
-}  // namespace
+/// What a grid's metadata and transform say (no tree needed).
+VdbGridData describeGrid(const openvdb::GridBase& grid, const std::filesystem::path& path) {
+  VdbGridData g;
+  g.name = grid.getName();
+  g.valueType = grid.valueType();
+  if (g.valueType.empty())
+    throw core::Error("cannot read VDB file '" + path.string() + "': grid '" +
+                      printableText(g.name) + "' has no value type (the file is damaged)");
+  g.gridClass = openvdb::GridBase::gridClassToString(grid.getGridClass());
+  g.vectorType = openvdb::GridBase::vecTypeToString(grid.getVectorType());
+  g.saveFloatAsHalf = grid.saveFloatAsHalf();
+  g.metadata = metadataText(grid);
+  if (!grid.constTransformPtr())
+    throw core::Error("cannot read VDB file '" + path.string() + "': grid '" +
+                      printableText(g.name) + "' has no transform (the file is damaged)");
+  const auto& xf = grid.constTransform();
+  g.linearTransform = xf.isLinear();
+  const openvdb::Vec3d vs = xf.voxelSize();
+  g.voxelSize = core::Vec3(vs[0], vs[1], vs[2]);
+  const openvdb::Vec3d o = xf.indexToWorld(openvdb::Vec3d(0, 0, 0));
+  g.indexOrigin = core::Vec3(o[0], o[1], o[2]);
+  return g;
+}
 
-VdbFileData readVdbFile(const std::filesystem::path& path, bool withValues) {
-  initializeOpenVdb();
-  VdbFileData data;
+/// The active voxel count and bounds the writer recorded in the grid's metadata (OpenVDB's
+/// "file_voxel_count", "file_bbox_min", "file_bbox_max", written unless switched off).
+void takeRecordedStatistics(const openvdb::GridBase& grid, VdbGridData& g) {
+  const auto count = typedEntry<openvdb::Int64Metadata>(grid, "file_voxel_count");
+  const auto lo = typedEntry<openvdb::Vec3IMetadata>(grid, "file_bbox_min");
+  const auto hi = typedEntry<openvdb::Vec3IMetadata>(grid, "file_bbox_max");
+  if (!count || count->value() < 0) {
+    g.activeVoxelsKnown = false;
+    return;
+  }
+  g.activeVoxelCount = std::size_t(count->value());
+  if (g.activeVoxelCount > 0 && lo && hi) {
+    g.activeMin = {lo->value().x(), lo->value().y(), lo->value().z()};
+    g.activeMax = {hi->value().x(), hi->value().y(), hi->value().z()};
+  }
+}
+
+/// Every exception a damaged file can make OpenVDB or the standard library throw, as our error
+/// naming the file.
+template <class Read>
+void readNamingTheFile(const std::filesystem::path& path, Read&& read) {
   try {
-    checkVdbLayout(path);
-    openvdb::io::File file(path.string());
-    file.open(false);  // read everything now; the file is closed at the end of this scope
-    data.fileMetadata = metadataText(*file.getMetadata());
-    checkAnnouncedSizes(file, path.string(), withValues);
-    file.close();
-    const openvdb::GridPtrVecPtr grids = readGridsStrictly(path);
-    for (const auto& grid : *grids) {
-      VdbGridData g;
-      g.name = grid->getName();
-      g.valueType = grid->valueType();
-      if (g.valueType.empty())
-        throw core::Error("cannot read VDB file '" + path.string() + "': grid '" +
-                          printableText(g.name) + "' has no value type (the file is damaged)");
-      g.gridClass = openvdb::GridBase::gridClassToString(grid->getGridClass());
-      g.vectorType = openvdb::GridBase::vecTypeToString(grid->getVectorType());
-      g.saveFloatAsHalf = grid->saveFloatAsHalf();
-      g.metadata = metadataText(*grid);
-      const auto& xf = grid->constTransform();
-      g.linearTransform = xf.isLinear();
-      const openvdb::Vec3d vs = xf.voxelSize();
-      g.voxelSize = core::Vec3(vs[0], vs[1], vs[2]);
-      const openvdb::Vec3d o = xf.indexToWorld(openvdb::Vec3d(0, 0, 0));
-      g.indexOrigin = core::Vec3(o[0], o[1], o[2]);
-      g.activeVoxelCount = grid->activeVoxelCount();
-      const openvdb::CoordBBox box = grid->evalActiveVoxelBoundingBox();
-      if (!box.empty()) {
-        g.activeMin = {box.min().x(), box.min().y(), box.min().z()};
-        g.activeMax = {box.max().x(), box.max().y(), box.max().z()};
-      }
-      if (withValues) {
-        loadValues<openvdb::FloatGrid>(*grid, g) || loadValues<openvdb::DoubleGrid>(*grid, g) ||
-            loadValues<openvdb::Vec3SGrid>(*grid, g) || loadValues<openvdb::Vec3DGrid>(*grid, g) ||
-            loadValues<openvdb::Int32Grid>(*grid, g);
-      }
-      data.grids.push_back(std::move(g));
-    }
+    read();
   } catch (const core::Error&) {
     throw;
   } catch (const openvdb::Exception& e) {
@@ -160,6 +173,55 @@ VdbFileData readVdbFile(const std::filesystem::path& path, bool withValues) {
     throw core::Error("cannot read VDB file '" + path.string() + "': the file is damaged (" +
                       printableText(e.what()) + ")");
   }
+}
+
+}  // namespace
+
+VdbFileData readVdbMetadata(const std::filesystem::path& path) {
+  initializeOpenVdb();
+  VdbFileData data;
+  readNamingTheFile(path, [&] {
+    checkVdbLayout(path);
+    openvdb::io::File file(path.string());
+    file.open(false);
+    data.fileMetadata = metadataText(*file.getMetadata());
+    const openvdb::GridPtrVecPtr grids = file.readAllGridMetadata();
+    for (const auto& grid : *grids) {
+      VdbGridData g = describeGrid(*grid, path);
+      takeRecordedStatistics(*grid, g);
+      data.grids.push_back(std::move(g));
+    }
+  });
+  return data;
+}
+
+VdbFileData readVdbFile(const std::filesystem::path& path, bool withValues) {
+  initializeOpenVdb();
+  VdbFileData data;
+  readNamingTheFile(path, [&] {
+    checkVdbLayout(path);
+    openvdb::io::File file(path.string());
+    file.open(false);  // read everything now; the file is closed at the end of this scope
+    data.fileMetadata = metadataText(*file.getMetadata());
+    checkAnnouncedSizes(file, path.string(), withValues);
+    file.close();
+    const openvdb::GridPtrVecPtr grids = readGridsStrictly(path);
+    for (const auto& grid : *grids) {
+      VdbGridData g = describeGrid(*grid, path);
+      g.activeVoxelCount = grid->activeVoxelCount();
+      const openvdb::CoordBBox box = grid->evalActiveVoxelBoundingBox();
+      if (!box.empty()) {
+        g.activeMin = {box.min().x(), box.min().y(), box.min().z()};
+        g.activeMax = {box.max().x(), box.max().y(), box.max().z()};
+      }
+      if (withValues) {
+        loadValues<openvdb::FloatGrid>(*grid, g) || loadValues<openvdb::DoubleGrid>(*grid, g) ||
+            loadValues<openvdb::Vec3SGrid>(*grid, g) || loadValues<openvdb::Vec3DGrid>(*grid, g) ||
+            loadValues<openvdb::Int32Grid>(*grid, g);
+      }
+      data.grids.push_back(std::move(g));
+    }
+  });
   return data;
 }
 

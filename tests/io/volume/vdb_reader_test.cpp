@@ -54,5 +54,34 @@ TEST(VdbReader, SizesBeyondTheFileAreRefusedBeforeOpenVdbReadsThem) {
   }
 }
 
+// A 10 KB file (found by the deterministic fuzz run of CI) whose tree announces a 21 GB
+// uncompressed chunk for a node buffer of 12 bytes. OpenVDB 10.0 copies the chunk into the
+// buffer before comparing the sizes: `tfd info` wrote past a heap buffer (an ASan report; in a
+// Release build the heap after the buffer overwritten with the file's bytes). `tfd info` now
+// reads metadata only, as `vdb_print -l` does, and describes the file.
+TEST(VdbReader, InfoDescribesAFileWhoseTreeWouldOverflowOpenVdb) {
+  const std::filesystem::path file =
+      std::filesystem::path(TFD_TEST_DATA_DIR) / "damaged" / "vdb_chunk_beyond_buffer.vdb";
+  const io::VdbFileData data = io::readVdbMetadata(file);
+  ASSERT_EQ(data.grids.size(), 1u);
+  EXPECT_EQ(data.grids[0].name, "T.eigval");
+  EXPECT_EQ(data.grids[0].valueType, "vec3s");
+  EXPECT_EQ(data.fileMetadata.at("generator"), "tfd");
+}
+
+// Missing and wrong files fail with the file's name, as the full reader does.
+TEST(VdbReader, MetadataOfAMissingOrForeignFileIsAnErrorNamingIt) {
+  for (const char* name : {"missing.vdb", "damaged/vdb_huge_grid_type.vdb"}) {
+    const std::filesystem::path file = std::filesystem::path(TFD_TEST_DATA_DIR) / name;
+    try {
+      io::readVdbMetadata(file);
+      FAIL() << name << " was read";
+    } catch (const core::Error& e) {
+      EXPECT_NE(std::string(e.what()).find(file.filename().string()), std::string::npos)
+          << e.what();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace tfd

@@ -180,6 +180,33 @@ bool insideBruteForce(const core::TetMesh& mesh, const Vec3& p, double& margin) 
   return margin >= 0;
 }
 
+// `tfd info` reads only metadata (io/volume/vdb_reader.h says why): what it reports of the
+// trees, from the statistics OpenVDB records with each grid, must be what the trees hold.
+TEST(VdbWriter, MetadataAloneTellsWhatTheTreesHold) {
+  TempDir dir("metadata");
+  const auto field = linearField(test::carvedBall(6, Vec3(0.1, -0.2, 0.05), 1.0));
+  auto options = allQuantities(field, 0.1);
+  options.origin = Vec3(0.013, 0.027, 0.041);
+  io::writeFieldVdb(dir.path() / "ball.vdb", field, options);
+  const auto meta = io::readVdbMetadata(dir.path() / "ball.vdb");
+  const auto full = io::readVdbFile(dir.path() / "ball.vdb", /*loadValues=*/false);
+  EXPECT_EQ(meta.fileMetadata, full.fileMetadata);
+  ASSERT_EQ(meta.grids.size(), full.grids.size());
+  for (const auto& f : full.grids) {  // metadata lists the grids in name order
+    SCOPED_TRACE(f.name);
+    const auto& m = grid(meta, f.name);
+    EXPECT_EQ(m.valueType, f.valueType);
+    EXPECT_EQ(m.gridClass, f.gridClass);
+    EXPECT_EQ(m.voxelSize, f.voxelSize);
+    EXPECT_EQ(m.indexOrigin, f.indexOrigin);
+    EXPECT_TRUE(m.activeVoxelsKnown);
+    EXPECT_GT(f.activeVoxelCount, 100u);
+    EXPECT_EQ(m.activeVoxelCount, f.activeVoxelCount);
+    EXPECT_EQ(m.activeMin, f.activeMin);
+    EXPECT_EQ(m.activeMax, f.activeMax);
+  }
+}
+
 TEST(VdbWriter, OnlyVoxelsInsideACurvedVolumeAreActive) {
   TempDir dir("ball");
   const auto mesh = test::carvedBall(8, Vec3(0.1, -0.2, 0.05), 1.0);
