@@ -10,8 +10,8 @@ namespace tfd::io {
 
 namespace {
 
-constexpr std::int64_t kVdbMagic = 0x56444220;  // "VDB "
-constexpr std::uint32_t kFirstCheckedVersion = 222, kLastCheckedVersion = 224;
+constexpr std::int64_t kVdbMagic = 0x56444220;       // "VDB "
+constexpr std::uint32_t kFirstCheckedVersion = 222;  // and every later one, as 224
 
 /// Little-endian reads with every length checked against the file's size.
 class LayoutReader {
@@ -81,8 +81,10 @@ void checkMetadata(LayoutReader& r, const char* owner) {
 void checkVdbLayout(const std::filesystem::path& path) {
   LayoutReader r(path);
   if (r.size() < 8 || r.value<std::int64_t>("the header") != kVdbMagic) return;  // OpenVDB says
+  // OpenVDB reads a file of a newer version than its own with its own layout (after a warning),
+  // so such a file is checked as one of the last known version; older layouts are OpenVDB's.
   const auto version = r.value<std::uint32_t>("the header");
-  if (version < kFirstCheckedVersion || version > kLastCheckedVersion) return;
+  if (version < kFirstCheckedVersion) return;
   r.skip(8, "the header");  // library major and minor version
   const bool gridOffsets = r.value<char>("the header") != 0;
   r.skip(36, "the header");  // UUID

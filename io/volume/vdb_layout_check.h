@@ -3,13 +3,14 @@
 // each grid's metadata), checked against the bytes the file has, before OpenVDB reads it.
 // OpenVDB allocates a string of whatever length a file announces and copies it into its
 // messages: a damaged 734-byte file announcing a 150 MB grid type kept `tfd info` busy for
-// 9 s. Layout of file versions 222-224 (OpenVDB 7-10, io/Archive.cc, io/GridDescriptor.cc).
+// 9 s. Layout of file versions 222-224 (OpenVDB 7-10, io/Archive.cc, io/GridDescriptor.cc);
+// OpenVDB reads files of later versions with the same layout, and so are they checked.
 #include <filesystem>
 
 namespace tfd::io {
 
 /// Throws core::Error naming the file and the part whose announced size exceeds what is left,
-/// or does nothing. Files of other versions, or without grid offsets, are checked as far as
+/// or does nothing. Files of older versions, or without grid offsets, are checked as far as
 /// their layout is known (the header and file metadata) and left to OpenVDB beyond that.
 void checkVdbLayout(const std::filesystem::path& path);
 

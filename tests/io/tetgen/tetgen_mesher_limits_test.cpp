@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <thread>
@@ -107,9 +108,24 @@ TEST(TetgenLimits, MeshesMadeAtTheSameTimeEqualMeshesMadeInTurn) {
   o.targetTets = 6000;
   const auto aAlone = tetrahedralize(a, o), bAlone = tetrahedralize(b, o);
   std::shared_ptr<const core::TetMesh> aTogether, bTogether;
-  std::thread other([&] { bTogether = tetrahedralize(b, o); });
-  aTogether = tetrahedralize(a, o);
+  // An error in the other thread is carried back: thrown there, it would end the whole test
+  // program (std::terminate) instead of failing this test.
+  std::exception_ptr otherError;
+  std::thread other([&] {
+    try {
+      bTogether = tetrahedralize(b, o);
+    } catch (...) {
+      otherError = std::current_exception();
+    }
+  });
+  try {
+    aTogether = tetrahedralize(a, o);
+  } catch (...) {
+    other.join();
+    throw;
+  }
   other.join();
+  if (otherError) std::rethrow_exception(otherError);
   EXPECT_EQ(aTogether->positions(), aAlone->positions());
   EXPECT_EQ(aTogether->tets(), aAlone->tets());
   EXPECT_EQ(bTogether->positions(), bAlone->positions());

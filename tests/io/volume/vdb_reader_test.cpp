@@ -36,7 +36,11 @@ TEST(VdbReader, ACountBeyondTheFileEndsAtTheEndOfTheFile) {
 // messages: the first kept `tfd info` busy for 9 s and printed 150 MB of spaces. Every size
 // the header, metadata and grid descriptors announce is now checked against the file first.
 TEST(VdbReader, SizesBeyondTheFileAreRefusedBeforeOpenVdbReadsThem) {
-  for (const char* name : {"vdb_huge_grid_type.vdb", "vdb_huge_metadata_name.vdb"}) {
+  // The last two (found by fuzz_info_vdb) also claim a file version newer than OpenVDB's,
+  // which OpenVDB reads with its own layout: their sizes went unchecked.
+  for (const char* name :
+       {"vdb_huge_grid_type.vdb", "vdb_huge_metadata_name.vdb",
+        "vdb_newer_version_huge_grid_name.vdb", "vdb_newer_version_huge_metadata_name.vdb"}) {
     const std::filesystem::path file = std::filesystem::path(TFD_TEST_DATA_DIR) / "damaged" / name;
     const auto start = std::chrono::steady_clock::now();
     try {
