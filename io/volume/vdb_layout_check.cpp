@@ -78,20 +78,21 @@ void checkMetadata(LayoutReader& r, const char* owner) {
 
 }  // namespace
 
-void checkVdbLayout(const std::filesystem::path& path) {
+VdbLayout checkVdbLayout(const std::filesystem::path& path) {
   LayoutReader r(path);
-  if (r.size() < 8 || r.value<std::int64_t>("the header") != kVdbMagic) return;  // OpenVDB says
+  VdbLayout layout;
+  if (r.size() < 8 || r.value<std::int64_t>("the header") != kVdbMagic) return layout;
   // OpenVDB reads a file of a newer version than its own with its own layout (after a warning),
   // so such a file is checked as one of the last known version; older layouts are OpenVDB's.
-  const auto version = r.value<std::uint32_t>("the header");
-  if (version < kFirstCheckedVersion) return;
+  layout.version = r.value<std::uint32_t>("the header");
+  if (layout.version < kFirstCheckedVersion) return layout;
   r.skip(8, "the header");  // library major and minor version
-  const bool gridOffsets = r.value<char>("the header") != 0;
+  layout.gridOffsets = r.value<char>("the header") != 0;
   r.skip(36, "the header");  // UUID
   checkMetadata(r, "the file metadata");
   const std::uint32_t grids = r.value<std::uint32_t>("the grid count");
   if (grids > r.left() / 36) r.damaged("it announces " + std::to_string(grids) + " grids");
-  if (!gridOffsets) return;  // descriptors and grids interleave without offsets: OpenVDB's part
+  if (!layout.gridOffsets) return layout;  // descriptors and grids interleave: OpenVDB's part
   for (std::uint32_t g = 0; g < grids; ++g) {
     r.skipString("a grid name");
     r.skipString("a grid type");
@@ -106,8 +107,11 @@ void checkVdbLayout(const std::filesystem::path& path) {
     r.seek(std::uint64_t(gridPos), "a grid position");
     r.skip(4, "a grid's compression flags");
     checkMetadata(r, "a grid's metadata");
+    r.skipString("a grid's transform type");  // then the map's numbers, then the tree
     r.seek(std::uint64_t(endPos), "a grid's end position");
   }
+  layout.checked = true;
+  return layout;
 }
 
 }  // namespace tfd::io

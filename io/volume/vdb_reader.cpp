@@ -153,6 +153,19 @@ void takeRecordedStatistics(const openvdb::GridBase& grid, VdbGridData& g) {
   }
 }
 
+/// OpenVDB reads the trees of a file without grid offsets when it opens it (File::open), and
+/// an older file's layout is not checked: neither is safe to give OpenVDB (see the header).
+void refuseUncheckedLayout(const std::filesystem::path& path, const VdbLayout& layout) {
+  if (layout.checked || layout.version == 0) return;  // checked, or OpenVDB says what it is
+  const std::string start = "cannot read VDB file '" + path.string() + "': ";
+  if (layout.version < 222)
+    throw core::Error(start + "its format version " + std::to_string(layout.version) +
+                      " is older than OpenVDB 2 (222); tfd reads versions from 222 on");
+  throw core::Error(start +
+                    "it was written as a stream (its grids have no offsets), which tfd does "
+                    "not read; `vdb_print` reads it, or save it again as a file");
+}
+
 /// Every exception a damaged file can make OpenVDB or the standard library throw, as our error
 /// naming the file.
 template <class Read>
@@ -181,7 +194,7 @@ VdbFileData readVdbMetadata(const std::filesystem::path& path) {
   initializeOpenVdb();
   VdbFileData data;
   readNamingTheFile(path, [&] {
-    checkVdbLayout(path);
+    refuseUncheckedLayout(path, checkVdbLayout(path));
     openvdb::io::File file(path.string());
     file.open(false);
     data.fileMetadata = metadataText(*file.getMetadata());
