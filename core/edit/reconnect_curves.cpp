@@ -47,6 +47,21 @@ std::string endText(const ReconnectEndpoint& e) {
          editNumber(e.position.z()) + ")";
 }
 
+/// The region's vertices on the domain surface held too: the new curves must join the ends
+/// inside the region, not end on the surface (the paper's local smoothing holds R ∩ ∂M alike).
+RegionVertices heldOnSurface(const TetMesh& mesh, RegionVertices rv) {
+  std::vector<int> free;
+  for (int v : rv.free) {
+    if (mesh.isBoundaryVertex(v))
+      rv.held[v] = 1;
+    else
+      free.push_back(v);
+  }
+  rv.free = std::move(free);
+  rv.freeOnSurface = 0;
+  return rv;
+}
+
 struct Setup {
   std::array<CurvePick, 2> picks;
   std::vector<int> targetIds;  ///< distinct
@@ -78,30 +93,36 @@ Setup setUp(const TetMesh& mesh, const DegenerateCurves& all, const ReconnectCur
   s.targetIds = {c0.id};
   if (c1.id != c0.id) s.targetIds.push_back(c1.id);
   s.forbid = forbidOtherCurves(mesh, all, s.targetIds);
-  // The segments seed the region; the picked curves beyond them (and a margin) are forbidden.
+  // The segments seed the region; the picked curves beyond them (and a margin) are forbidden,
+  // except where their tets are seeds (next to the segments' ends, where the region's boundary
+  // will cut the curve).
   std::vector<int> core;
-  for (int id : s.targetIds) {
-    const DegenerateCurve& c = all.curve(id);
+  std::vector<std::vector<int>> far(s.targetIds.size());
+  for (std::size_t k = 0; k < s.targetIds.size(); ++k) {
+    const DegenerateCurve& c = all.curve(s.targetIds[k]);
     std::vector<double> d(c.points.size(), std::numeric_limits<double>::infinity());
-    for (int k = 0; k < 2; ++k) {
-      if (s.picks[k].curveId != id) continue;
-      const std::vector<double> dk = arcDistances(c, s.picks[k]);
-      for (std::size_t i = 0; i < d.size(); ++i) d[i] = std::min(d[i], dk[i]);
+    for (int q = 0; q < 2; ++q) {
+      if (s.picks[q].curveId != c.id) continue;
+      const std::vector<double> dq = arcDistances(c, s.picks[q]);
+      for (std::size_t i = 0; i < d.size(); ++i) d[i] = std::min(d[i], dq[i]);
     }
-    std::vector<int> far;
     for (std::size_t i = 0; i < d.size(); ++i) {
       const std::vector<int> tets = tetsOfSource(mesh, c.sources[i]);
       if (d[i] <= 0.5 * segmentLength) core.insert(core.end(), tets.begin(), tets.end());
-      if (d[i] > 0.5 * segmentLength + 3 * h) far.insert(far.end(), tets.begin(), tets.end());
+      if (d[i] > 0.5 * segmentLength + 3 * h) far[k].insert(far[k].end(), tets.begin(), tets.end());
     }
-    for (int t : withNeighbourTets(mesh, far)) s.forbid.add(t, id);
   }
   s.seeds = withNeighbourTets(mesh, core);
   for (int t : s.seeds)
     if (s.forbid.flag[t])
       throw Error(
           "no ball region holds both segments: " + describeCurve(all.curve(s.forbid.owner[t])) +
-          " passes next to them (shorten segment_length or move the picks)");
+          " passes next to them (move the picks or shorten segment_length)");
+  std::vector<unsigned char> isSeed(mesh.tetCount(), 0);
+  for (int t : s.seeds) isSeed[t] = 1;
+  for (std::size_t k = 0; k < far.size(); ++k)
+    for (int t : withNeighbourTets(mesh, far[k]))
+      if (!isSeed[t]) s.forbid.add(t, s.targetIds[k]);
   return s;
 }
 
@@ -173,7 +194,7 @@ ReconnectCurvesResult reconnectCurves(const TensorField& field, const ReconnectC
     };
     const BallCheck ball = checkTopologicalBall(mesh, region.tets);
     if (!ball.ball) return fail("region is a ball", ball.problem);
-    const RegionVertices rv = regionVertices(mesh, region.tets);
+    const RegionVertices rv = heldOnSurface(mesh, regionVertices(mesh, region.tets));
     const RegionComplex complex = regionComplex(mesh, region.tets);
     const VectorisedEigenvector vec = vectoriseEigenvector(field, complex, type);
     if (vec.signConflicts > 0)

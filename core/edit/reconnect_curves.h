@@ -5,16 +5,18 @@
 // same curve, e.g. a loop to break in two; both of one L/P type); the segment of each around
 // its pick (`segmentLength` of curve, half on each side) seeds the region, and every tet
 // around another curve, or around the picked curves farther than the segments (plus a margin
-// of three mean edge lengths, where the region's boundary cuts them), is forbidden
+// of three mean edge lengths, where the region's boundary cuts them; seeds excepted), is forbidden
 // (edit_driver.h); grow a ball region out to `regionDistance` (core/region/ball_region.h) and
-// check it independently; the segments run through it to where the curves leave it: their four
-// ends (reconnect_segments.h). Step 2: vectorise the non-repeating eigenvector and classify the
-// ends; the pairing follows from Lemma 6.1 / Theorem 6.2 (reconnect_pairing.h). Step 3: paths
-// between the paired ends, the nearest-path partition and the thickened sheet
-// (reconnect_sheet.h, graph distance). Steps 4–5: singularity-free field on the sheet, harmonic
-// re-solve of the rest of the region (reconnect_field.h). Verification (reconnect_verification.h):
-// outside unchanged; inside, exactly two new curves, joining the ends as paired. A failed try
-// retries with the distance grown by `growFactor`, at most `retries` times (edit_driver.h).
+// check it independently (its vertices on the domain surface are held like those on its
+// boundary inside the volume: a new curve must not end on the surface); the segments run through it
+// to where the curves leave it: their four ends (reconnect_segments.h). Step 2: vectorise the
+// non-repeating eigenvector and classify the ends; the pairing follows from Lemma 6.1 / Theorem 6.2
+// (reconnect_pairing.h). Step 3: paths between the paired ends, the nearest-path partition and the
+// thickened sheet (reconnect_sheet.h, graph distance). Steps 4–5: singularity-free field on the
+// sheet, harmonic re-solve of the rest of the region (reconnect_field.h). Verification
+// (reconnect_verification.h): outside unchanged; inside, exactly two new curves, joining the ends
+// as paired. A failed try retries with the distance grown by `growFactor`, at most `retries` times
+// (edit_driver.h).
 #include <array>
 #include <string>
 #include <vector>

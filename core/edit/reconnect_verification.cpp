@@ -28,23 +28,49 @@ struct Piece {
   int first = -1, last = -1;  ///< point indices of the piece's ends
 };
 
-/// Maximal runs of points touching the region; `whole` is set when a closed curve lies in it.
-std::vector<Piece> pieces(const TetMesh& mesh, const DegenerateCurve& c,
-                          const std::vector<unsigned char>& inRegion, bool& whole) {
+/// Per point of the curve: whether it lies on a piece through the region, i.e. a maximal run
+/// of points touching the region's tets that holds a point inside it. A run of points only on
+/// the region's boundary (a curve grazing a held face, unchanged) is not such a piece.
+std::vector<char> throughRegion(const TetMesh& mesh, const DegenerateCurve& c,
+                                const std::vector<unsigned char>& inRegion) {
   const int n = int(c.points.size());
-  std::vector<char> in(n);
-  for (int i = 0; i < n; ++i)
-    in[i] = pointPlace(mesh, c.sources[i], inRegion) != PointPlace::Outside;
+  std::vector<PointPlace> place(n);
+  for (int i = 0; i < n; ++i) place[i] = pointPlace(mesh, c.sources[i], inRegion);
+  std::vector<char> through(n, 0);
+  int s0 = 0;
+  if (c.closed)
+    while (s0 < n && place[s0] != PointPlace::Outside) ++s0;
+  if (s0 == n) return std::vector<char>(n, 1);  // a loop wholly in the region
+  for (int k = 0; k < n;) {
+    const int i = (s0 + k) % n;
+    if (place[i] == PointPlace::Outside) {
+      ++k;
+      continue;
+    }
+    int len = 0;
+    bool inside = false;
+    while (k + len < n && place[(s0 + k + len) % n] != PointPlace::Outside)
+      inside = inside || place[(s0 + k + len) % n] == PointPlace::Inside, ++len;
+    for (int j = 0; j < len; ++j) through[(s0 + k + j) % n] = inside;
+    k += len;
+  }
+  return through;
+}
+
+/// The pieces of the curve through the region (runs of `through`); `whole` is set when a
+/// closed curve lies in it.
+std::vector<Piece> pieces(const DegenerateCurve& c, const std::vector<char>& through, bool& whole) {
+  const int n = int(c.points.size());
   std::vector<Piece> out;
-  whole = c.closed && std::all_of(in.begin(), in.end(), [](char x) { return x != 0; });
+  whole = c.closed && std::all_of(through.begin(), through.end(), [](char x) { return x != 0; });
   if (whole) return out;
   int s0 = 0;
   if (c.closed)
-    while (in[s0]) ++s0;  // start the scan outside, so no run wraps
+    while (through[s0]) ++s0;  // start the scan off the pieces, so no piece wraps
   bool open = false;
   for (int k = 0; k < n; ++k) {
     const int i = (s0 + k) % n;
-    if (!in[i]) {
+    if (!through[i]) {
       open = false;
       continue;
     }
@@ -64,18 +90,19 @@ bool lexLess(const Vec3& a, const Vec3& b) {
   return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
 }
 
-/// The points outside the region of the flagged curves, sorted: `far` those whose tets hold no
-/// region vertex (the extraction sees exactly the same values there), `near` the others (the
-/// extraction's fallback perturbation of a held vertex scales with the tensors around it, some
-/// of which are free, so those points may move by that perturbation's size).
+/// The points of the flagged curves not on a piece through the region, sorted: `far` those whose
+/// tets hold no region vertex (the extraction sees exactly the same values there), `near` the
+/// others (the extraction's fallback perturbation of a held vertex scales with the tensors around
+/// it, some of which are free, so those points may move by that perturbation's size).
 void outsidePoints(const TetMesh& mesh, const DegenerateCurves& curves,
                    const std::vector<char>& take, const std::vector<unsigned char>& inRegion,
                    const std::vector<char>& regionVertex, std::vector<Vec3>& far,
                    std::vector<Vec3>& near) {
   for (const DegenerateCurve& c : curves.curves()) {
     if (!take[c.id]) continue;
+    const std::vector<char> through = throughRegion(mesh, c, inRegion);
     for (std::size_t i = 0; i < c.points.size(); ++i) {
-      if (pointPlace(mesh, c.sources[i], inRegion) != PointPlace::Outside) continue;
+      if (through[i]) continue;
       bool touches = false;
       for (int t : tetsOfSource(mesh, c.sources[i]))
         for (int v : mesh.tets()[t]) touches = touches || regionVertex[v];
@@ -112,13 +139,21 @@ ReconnectVerification verifyReconnection(
   for (const DegenerateCurve& c : curvesAfter.curves()) {
     if (matched[c.id]) continue;
     bool whole = false;
-    const std::vector<Piece> p = pieces(mesh, c, inRegion, whole);
+    const std::vector<Piece> p = pieces(c, throughRegion(mesh, c, inRegion), whole);
     if (whole) return fail("two new curves", describeCurve(c) + " lies inside the region");
     all.insert(all.end(), p.begin(), p.end());
   }
-  if (all.size() != 2)
+  if (all.size() != 2) {
+    std::string where;
+    for (std::size_t k = 0; k < all.size() && k < 4; ++k) {
+      const DegenerateCurve& c = curvesAfter.curve(all[k].curve);
+      where += (k ? "; " : ": ") + pointText(c.points[all[k].first]) + " to " +
+               pointText(c.points[all[k].last]);
+    }
     return fail("two new curves", std::to_string(all.size()) +
-                                      " pieces of curves pass through the region (2 expected)");
+                                      " pieces of curves pass through the region (2 expected)" +
+                                      where);
+  }
   std::array<char, 4> used{};
   for (int k = 0; k < 2; ++k) {
     const DegenerateCurve& c = curvesAfter.curve(all[k].curve);

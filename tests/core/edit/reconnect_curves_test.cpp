@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
+#include <cmath>
 #include <cstring>
 #include <functional>
 
@@ -198,6 +199,171 @@ TEST(ReconnectCurves, CaseBTwoWedgesSwapEnds) { expectReconnected(scenarios()[2]
 TEST(ReconnectCurves, CaseCTwoTrisectorsSwapEnds) { expectReconnected(scenarios()[3]); }
 TEST(ReconnectCurves, CaseDAWedgeAndAMixedCurve) { expectReconnected(scenarios()[4]); }
 TEST(ReconnectCurves, CaseETwoMixedCurvesOnOneSide) { expectReconnected(scenarios()[5]); }
+
+TEST(ReconnectCurves, BreaksAMixedLoopInTwo) {
+  // The circle x² + z² = 0.36, y = 0: with e up, its right half is a wedge and its left half a
+  // trisector (transitions at the top and bottom). Reconnecting its right and left sides joins
+  // the two lower ends and the two upper ends (case a): one loop becomes two.
+  const auto mesh = box();
+  auto W = [](const Vec3& p) { return Complex(p.x() * p.x() + p.z() * p.z() - 0.36, p.y()); };
+  const TensorField field = testing::designedField(mesh, W, [](const Vec3&) { return upFrame(); });
+  const DegenerateCurves before = extractDegenerateCurves(field);
+  ASSERT_EQ(before.size(), 1u) << before.summary();
+  ASSERT_TRUE(before.curve(0).closed);
+  ReconnectCurvesOptions o;
+  o.picks = {Vec3(0.6, 0, 0), Vec3(-0.6, 0, 0)};
+  o.segmentLength = 0.5;
+  o.regionDistance = 0.3;
+  const ReconnectCurvesResult r = reconnectCurves(field, o);
+  for (const std::string& line : r.report.lines()) std::printf("  %s\n", line.c_str());
+  ASSERT_EQ(r.curves.size(), 2u) << r.curves.summary();
+  EXPECT_TRUE(r.curves.curve(0).closed);
+  EXPECT_TRUE(r.curves.curve(1).closed);
+  for (int i = 0; i < 2; ++i) {
+    const int j = r.report.partner[i];
+    EXPECT_EQ(r.report.ends[i].position.z() > 0, r.report.ends[j].position.z() > 0);
+    EXPECT_TRUE(sameCurveHolds(r.curves, r.report.ends[i].position, r.report.ends[j].position));
+  }
+  EXPECT_NE(r.report.lines().back().find("1 curves -> 2"), std::string::npos);
+}
+
+TEST(ReconnectCurves, TheOtherPairingIsNotARealisableReconnection) {
+  // Lemma 6.1 in the other direction: joining the ends the theorem does not pair would need a
+  // curve with an even number of transitions between ends in the same part (or an odd number
+  // between parts). Every scenario's ends confirm that exactly one pairing is allowed.
+  for (const Scenario& s : scenarios()) {
+    SCOPED_TRACE(s.name);
+    const TensorField field =
+        testing::designedField(box(), s.W, [](const Vec3&) { return upFrame(); });
+    const ReconnectCurvesResult r = reconnectCurves(field, options(s));
+    const auto& e = r.report.ends;
+    const int j = r.report.partner[0], other = j == 2 ? 3 : 2;
+    EXPECT_TRUE(lemmaAllowsJoin(e[0], e[j]));
+    EXPECT_FALSE(lemmaAllowsJoin(e[0], e[other]));
+    EXPECT_TRUE(lemmaAllowsJoin(e[1], e[other]));
+    // The boundary faces' own classification agrees with the curves' here (curves cross the
+    // region's boundary roughly along V).
+    for (int i = 0; i < 4; ++i)
+      if (e[i].faceIncoming >= 0) {
+        EXPECT_EQ(e[i].faceIncoming, int(e[i].incoming)) << i;
+      }
+  }
+}
+
+TEST(ReconnectCurves, PairingFollowsTheCharges) {
+  // Theorem 6.2 by table: all sixteen charge patterns of the four ends that satisfy Lemma 6.1
+  // on the two segments give the partner with the other charge; the others are refused.
+  for (int bits = 0; bits < 16; ++bits) {
+    std::array<ReconnectEndpoint, 4> e;
+    for (int i = 0; i < 4; ++i) {
+      e[i].segment = i / 2;
+      e[i].incoming = (bits >> i) & 1;
+      e[i].pattern = i % 3 == 0 ? DegeneratePattern::Wedge : DegeneratePattern::Trisector;
+    }
+    const ReconnectPairing p = pairEndpoints(e);
+    const bool lemma = e[0].charge() != e[1].charge() && e[2].charge() != e[3].charge();
+    EXPECT_EQ(p.consistent, lemma) << bits;
+    if (!lemma) {
+      EXPECT_FALSE(p.problem.empty());
+      continue;
+    }
+    for (int i = 0; i < 4; ++i) {
+      EXPECT_EQ(p.partner[p.partner[i]], i);
+      EXPECT_NE(e[i].segment, e[p.partner[i]].segment);
+      EXPECT_NE(e[i].charge(), e[p.partner[i]].charge());
+    }
+  }
+}
+
+TEST(ReconnectCurves, GraphPartitionAgreesWithTheEuclideanOne) {
+  // The sheet's nearest-path partition by graph distance against exact Euclidean distances to
+  // the same paths (reconnect_sheet.h: why graph distance).
+  for (const Scenario& s : scenarios()) {
+    SCOPED_TRACE(s.name);
+    const auto mesh = box();
+    const TensorField field =
+        testing::designedField(mesh, s.W, [](const Vec3&) { return upFrame(); });
+    const DegenerateCurves before = extractDegenerateCurves(field);
+    const ReconnectCurvesResult r = reconnectCurves(field, options(s));
+    const RegionComplex complex = regionComplex(*mesh, r.regionTets);
+    auto end = [&](int i) {
+      const ReconnectEndpoint& e = r.report.ends[i];
+      return SheetEnd{e.position, before.curve(e.curveId).sources[e.pointIndex]};
+    };
+    const ReconnectSheet sheet = reconnectSheet(
+        *mesh, complex, {{{end(0), end(r.report.partner[0])}, {end(1), end(r.report.partner[1])}}});
+    ASSERT_TRUE(sheet.problem.empty()) << sheet.problem;
+    EXPECT_EQ(sheet.tets.size(), r.report.sheetTets);
+    const std::vector<signed char> exact = euclideanLabels(*mesh, complex, sheet.paths);
+    std::vector<char> onSheet(mesh->vertexCount(), 0);
+    for (int t : sheet.tets)
+      for (int v : mesh->tets()[t]) onSheet[v] = 1;
+    std::size_t same = 0, differentOnSheet = 0;
+    for (std::size_t i = 0; i < exact.size(); ++i) {
+      same += exact[i] == sheet.label[i];
+      differentOnSheet += exact[i] != sheet.label[i] && onSheet[complex.vertices[i]];
+    }
+    const double agreement = double(same) / double(exact.size());
+    const std::size_t different = exact.size() - same;
+    std::printf(
+        "  %s: graph and Euclidean labels agree on %.1f %% of %zu vertices; %zu of the %zu "
+        "others are sheet vertices\n",
+        s.name, 100 * agreement, exact.size(), differentOnSheet, different);
+    EXPECT_GE(agreement, 0.9);
+  }
+}
+
+TEST(ReconnectCurves, BadInputIsAClearError) {
+  const auto mesh = box();
+  const Scenario& s = scenarios()[0];
+  const TensorField field =
+      testing::designedField(mesh, s.W, [](const Vec3&) { return upFrame(); });
+  auto message = [&](const ReconnectCurvesOptions& o) -> std::string {
+    try {
+      reconnectCurves(field, o);
+    } catch (const Error& e) {
+      return e.what();
+    }
+    return "";
+  };
+  ReconnectCurvesOptions o = options(s);
+  o.picks.pop_back();
+  EXPECT_NE(message(o).find("picks: give two points"), std::string::npos);
+  o = options(s);
+  o.picks[1] = Vec3(0, std::nan(""), 0);
+  EXPECT_NE(message(o).find("not a finite point"), std::string::npos);
+  o = options(s);
+  o.segmentLength = 0;
+  EXPECT_NE(message(o).find("segment_length"), std::string::npos);
+  o = options(s);
+  o.picks[1] = Vec3(0.3, 0, 0.05);  // the same segment twice
+  EXPECT_NE(message(o).find("same segment"), std::string::npos) << message(o);
+  o = options(s);
+  o.retries = -1;
+  EXPECT_NE(message(o).find("retries"), std::string::npos);
+  const TensorField flat = testing::designedField(mesh, [](const Vec3&) { return Complex(1, 0); });
+  try {
+    reconnectCurves(flat, options(s));
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("no degenerate curves"), std::string::npos);
+  }
+}
+
+TEST(ReconnectCurves, OneAndTwoThreadsGiveTheSameBits) {
+  const Scenario& s = scenarios()[2];  // b: the rerouted path
+  const TensorField field =
+      testing::designedField(box(), s.W, [](const Vec3&) { return upFrame(); });
+  auto run = [&](int threads) {
+    tbb::global_control c(tbb::global_control::max_allowed_parallelism, threads);
+    return reconnectCurves(field, options(s));
+  };
+  const ReconnectCurvesResult a = run(1), b = run(2);
+  EXPECT_EQ(a.regionTets, b.regionTets);
+  for (int v = 0; v < int(box()->vertexCount()); ++v)
+    ASSERT_TRUE(bitwiseEqual(a.field.at(v), b.field.at(v))) << v;
+  EXPECT_EQ(a.curves.size(), b.curves.size());
+}
 
 }  // namespace
 }  // namespace tfd::core
