@@ -8,6 +8,9 @@
 //  - DeformCurve1M: the straight curve x = y = 0 of a field on the same 1M-tet box bent onto a
 //    smooth bump of height 0.3 (paper §6.1), verification included, for several region
 //    distances.
+//  - ReconnectLines1M: a pure wedge line and a pure trisector line of a field on the same
+//    1M-tet box reconnected into two mixed curves (paper §6.2, Fig. 11a), verification
+//    included, for several region distances.
 // Commands and figures: bench/RESULTS.md.
 #include <benchmark/benchmark.h>
 
@@ -22,6 +25,7 @@
 
 #include "core/design/propagate.h"
 #include "core/edit/deform_curve.h"
+#include "core/edit/reconnect_curves.h"
 #include "core/edit/remove_curves.h"
 #include "core/structured_mesh.h"
 #include "core/surface/primitives.h"
@@ -202,6 +206,41 @@ struct Tally {
     refusals += o.refusals, failures += o.failures;
   }
 };
+
+void ReconnectLines1M(benchmark::State& state) {
+  static const TensorField field =
+      testing::designedField(makeBoxMesh(55, 55, 55, Vec3(-1, -1, -1), Vec3(1, 1, 1)),
+                             [](const Vec3& p) { return testing::twoLinesW(p, 0.3); });
+  ReconnectCurvesOptions o;
+  o.picks = {Vec3(0.3, 0, 0), Vec3(-0.3, 0, 0)};
+  o.regionDistance = state.range(0) < 0 ? -1 : state.range(0) / 100.0;
+  ReconnectCurvesResult last{field, {}, {}, {}};
+  bool verified = true;
+  for (auto _ : state) {
+    try {
+      last = reconnectCurves(field, o);
+    } catch (const ReconnectionFailed& e) {  // reported, not hidden
+      verified = false;
+      state.SetLabel(e.what());
+    }
+  }
+  state.counters["verified"] = verified;
+  state.counters["tets"] = double(field.mesh().tetCount());
+  state.counters["region_tets"] = double(last.report.regionTets);
+  state.counters["sheet_tets"] = double(last.report.sheetTets);
+  state.counters["solved"] = double(last.report.sheetSolved + last.report.sidesSolved);
+  state.counters["tries"] = double(last.report.tries.size());
+  state.counters["curves_after"] = double(last.curves.size());
+  state.counters["peak_MB"] = peakMegabytes();
+}
+BENCHMARK(ReconnectLines1M)
+    ->Arg(10)
+    ->Arg(20)
+    ->Arg(-1)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1)
+    ->Repetitions(2)
+    ->ReportAggregatesOnly(false);
 
 void RandomRemovals(benchmark::State& state) {
   const auto solids = randomSolids();
