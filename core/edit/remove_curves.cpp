@@ -9,6 +9,7 @@
 
 #include "core/edit/edit_driver.h"
 #include "core/edit/edit_verification.h"
+#include "core/edit/remove_two_loops.h"
 #include "core/edit/singularity_free_field.h"
 #include "core/edit/vectorise_eigenvector.h"
 #include "core/region/ball_check.h"
@@ -130,6 +131,8 @@ std::vector<std::string> RemoveCurvesReport::lines() const {
   for (std::size_t i = 0; i < targets.size(); ++i)
     head += (i ? " and " : "") + targets[i] + " (picked " + editNumber(pickDistances[i]) + " away)";
   out.push_back(head);
+  for (const std::string& line : reconnection) out.push_back("step 1 (reconnection): " + line);
+  if (!reconnection.empty()) out.push_back("step 2: one-loop removal of the merged loop");
   out.push_back("region: " + std::to_string(regionTets) + " tets, " +
                 std::to_string(regionVertices) + " vertices (" + std::to_string(freeVertices) +
                 " free, " + std::to_string(heldVertices) + " held; " +
@@ -165,6 +168,9 @@ RemoveCurvesResult removeCurves(const TensorField& field, const RemoveCurvesOpti
   for (const DegenerateCurve* c : targets.curves) report.targets.push_back(describeCurve(*c));
   report.pickDistances = targets.pickDistances;
   report.curvesBefore = all.size();
+  if (report.scenario == RemovalScenario::TwoLoop)
+    return removeTwoLoops(field, o, *targets.curves[0], *targets.curves[1], std::move(report),
+                          progress);
   const DegenerateType type = targets.curves[0]->type;
 
   ForbiddenTets forbid = forbidOtherCurves(mesh, all, targets.ids);

@@ -14,8 +14,11 @@ void declare(graph::NodeDecl& d) {
   d.doc(
        "Removes the degenerate curves nearest the picked points (paper §6.4): one open curve "
        "with a wedge end and a trisector end (one-curve), an open pure wedge curve with an "
-       "open pure trisector curve of the same L/P type (two-curve), or one loop with wedge and "
-       "trisector parts (one-loop); other picks are refused with the reason. The field is "
+       "open pure trisector curve of the same L/P type (two-curve), one loop with wedge and "
+       "trisector parts (one-loop), or a pure wedge loop with a pure trisector loop of the same "
+       "type (two-loop: the loops are first reconnected into one mixed loop where they come "
+       "closest, as ReconnectCurves does, then that loop is removed; both steps are verified "
+       "and reported); other picks are refused with the reason. The field is "
        "rebuilt free of degenerate points inside a region that is a topological ball around "
        "the targets, avoiding every other curve; outside it nothing changes. The result is "
        "verified by extracting the curves again (targets gone, nothing new, every other curve "
