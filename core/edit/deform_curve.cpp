@@ -63,6 +63,52 @@ double courseDistance(const TetMesh& mesh, const DegenerateCurve& now, const Def
   return h;
 }
 
+struct DeformSeeds {
+  std::vector<int> envelope, seeds;
+  std::vector<char> held, anchor;
+};
+
+DeformSeeds deformSeeds(const TetMesh& mesh, const DegenerateCurve& curve, const CurvePick& pick,
+                        const DeformPaths& paths) {
+  const double h = mesh.meanEdgeLength();
+  // γ1's tets (the moving points' sources) and γ2's (the minimal envelope), walked from the
+  // curve; the envelope's vertices and every vertex within D + h of γ2 (the thick envelope,
+  // deformation_map.h) are held by φ, so the seeds are the tets around all of them.
+  std::vector<int> curveTets;
+  DeformSeeds sd;
+  std::vector<char>& anchor = sd.anchor;
+  anchor.assign(mesh.vertexCount(), 0);
+  for (std::size_t i = 0; i < curve.points.size(); ++i)
+    for (int t : tetsOfSource(mesh, curve.sources[i])) {
+      if (paths.inGamma1[i])
+        curveTets.push_back(t);
+      else
+        for (int v : mesh.tets()[t]) anchor[v] = 1;  // the rest of the curve stays
+    }
+  const int startTet = tetsOfSource(mesh, curve.sources[pick.pointIndex]).front();
+  sd.envelope = polylineTets(mesh, paths.target, startTet, 0.125 * h);
+  const std::vector<int>& envelope = sd.envelope;
+  std::vector<int> g1 = polylineTets(mesh, paths.gamma1, startTet, 0.125 * h);
+  curveTets.insert(curveTets.end(), g1.begin(), g1.end());
+  curveTets.insert(curveTets.end(), envelope.begin(), envelope.end());
+  double displacement = 0;
+  for (std::size_t i = 0; i < paths.gamma1.size(); ++i)
+    displacement = std::max(displacement, (paths.gamma1[i] - paths.gamma2[i]).norm());
+  std::vector<char>& held = sd.held;
+  held.assign(mesh.vertexCount(), 0);
+  for (const TubeVertex& v : findTubeVertices(mesh, paths.target, false, displacement + h).vertices)
+    held[v.vertex] = 1;
+  std::vector<int>& seeds = sd.seeds;
+  seeds = withNeighbourTets(mesh, curveTets);
+  for (int v = 0; v < int(mesh.vertexCount()); ++v)
+    if (held[v])
+      for (int t : mesh.vertexTets(v)) seeds.push_back(t);
+  std::sort(seeds.begin(), seeds.end());
+  seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
+
+  return sd;
+}
+
 }  // namespace
 
 std::vector<std::string> DeformCurveReport::lines() const {
@@ -105,35 +151,10 @@ DeformCurveResult deformCurve(const TensorField& field, const DeformCurveOptions
   report.samples = int(paths.gamma2.size());
   report.curvesBefore = all.size();
 
-  // γ1's tets (the moving points' sources) and γ2's (the minimal envelope), walked from the
-  // curve; the envelope's vertices and every vertex within D + h of γ2 (the thick envelope,
-  // deformation_map.h) are held by φ, so the seeds are the tets around all of them.
-  std::vector<int> curveTets;
-  std::vector<char> anchor(mesh.vertexCount(), 0);
-  for (std::size_t i = 0; i < curve.points.size(); ++i)
-    for (int t : tetsOfSource(mesh, curve.sources[i])) {
-      if (paths.inGamma1[i])
-        curveTets.push_back(t);
-      else
-        for (int v : mesh.tets()[t]) anchor[v] = 1;  // the rest of the curve stays
-    }
-  const int startTet = tetsOfSource(mesh, curve.sources[pick.pointIndex]).front();
-  const std::vector<int> envelope = polylineTets(mesh, paths.target, startTet, 0.125 * h);
-  std::vector<int> g1 = polylineTets(mesh, paths.gamma1, startTet, 0.125 * h);
-  curveTets.insert(curveTets.end(), g1.begin(), g1.end());
-  curveTets.insert(curveTets.end(), envelope.begin(), envelope.end());
-  double displacement = 0;
-  for (std::size_t i = 0; i < paths.gamma1.size(); ++i)
-    displacement = std::max(displacement, (paths.gamma1[i] - paths.gamma2[i]).norm());
-  std::vector<char> held(mesh.vertexCount(), 0);
-  for (const TubeVertex& v : findTubeVertices(mesh, paths.target, false, displacement + h).vertices)
-    held[v.vertex] = 1;
-  std::vector<int> seeds = withNeighbourTets(mesh, curveTets);
-  for (int v = 0; v < int(mesh.vertexCount()); ++v)
-    if (held[v])
-      for (int t : mesh.vertexTets(v)) seeds.push_back(t);
-  std::sort(seeds.begin(), seeds.end());
-  seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
+  const DeformSeeds sd = deformSeeds(mesh, curve, pick, paths);
+  const std::vector<int>& envelope = sd.envelope;
+  const std::vector<char>&held = sd.held, &anchor = sd.anchor;
+  const std::vector<int>& seeds = sd.seeds;
 
   const int targetIds[] = {id};
   const ForbiddenTets forbid = forbidOtherCurves(mesh, all, targetIds);

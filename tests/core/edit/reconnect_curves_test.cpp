@@ -20,6 +20,7 @@
 #include <functional>
 
 #include "core/edit/reconnect_curves.h"
+#include "core/edit/reconnect_field.h"
 #include "core/edit/reconnect_sheet.h"
 #include "core/edit/region_complex.h"
 #include "core/region/ball_check.h"
@@ -248,6 +249,51 @@ TEST(ReconnectCurves, TheOtherPairingIsNotARealisableReconnection) {
         EXPECT_EQ(e[i].faceIncoming, int(e[i].incoming)) << i;
       }
   }
+}
+
+TEST(ReconnectCurves, ASheetBetweenTheOtherPairsDoesNotJoinThem) {
+  // Falsification of Theorem 6.2 by construction: the same steps 3–5 with the sheet built for
+  // the pairing the theorem rules out (A with the other end of the second segment). Around the
+  // sheet's held rim the medium eigenvector then turns once (the two old curves pierce the
+  // sheet the same way), so no field without degenerate points exists on the sheet and the
+  // re-extracted curves do not join the ends that way.
+  const auto mesh = box();
+  int built = 0;
+  for (const Scenario& s : scenarios()) {
+    SCOPED_TRACE(s.name);
+    const TensorField field =
+        testing::designedField(mesh, s.W, [](const Vec3&) { return upFrame(); });
+    const DegenerateCurves before = extractDegenerateCurves(field);
+    const ReconnectCurvesResult r = reconnectCurves(field, options(s));
+    const auto& e = r.report.ends;
+    const int wrong = r.report.partner[0] == 2 ? 3 : 2, wrongB = wrong == 2 ? 3 : 2;
+    const RegionComplex complex = regionComplex(*mesh, r.regionTets);
+    auto end = [&](int i) {
+      return SheetEnd{e[i].position, before.curve(e[i].curveId).sources[e[i].pointIndex]};
+    };
+    const ReconnectSheet sheet =
+        reconnectSheet(*mesh, complex, {{{end(0), end(wrong)}, {end(1), end(wrongB)}}});
+    if (!sheet.problem.empty()) continue;  // no sheet: not realisable either
+    RegionVertices rv = regionVertices(*mesh, r.regionTets);
+    for (int v : rv.vertices)
+      if (mesh->isBoundaryVertex(v)) rv.held[v] = 1;
+    std::erase_if(rv.free, [&](int v) { return mesh->isBoundaryVertex(v); });
+    ReconnectFieldReport fr;
+    TensorField edited = field;
+    try {
+      edited = reconnectField(field, sheet.tets, rv, before.curve(e[0].curveId).type, {}, fr);
+    } catch (const Error&) {
+      continue;  // refused: not realisable
+    }
+    const DegenerateCurves after = extractDegenerateCurves(edited);
+    ++built;
+    std::printf("  %s: the ruled-out sheet leaves %zu curves (%s)\n", s.name, after.size(),
+                after.summary().c_str());
+    EXPECT_FALSE(sameCurveHolds(after, e[0].position, e[wrong].position) &&
+                 sameCurveHolds(after, e[1].position, e[wrongB].position))
+        << "the ruled-out pairing was realised";
+  }
+  EXPECT_GE(built, 4) << "the wrong sheet was refused too often to test anything";
 }
 
 TEST(ReconnectCurves, PairingFollowsTheCharges) {
