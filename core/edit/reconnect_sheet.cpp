@@ -102,7 +102,9 @@ ReconnectSheet reconnectSheet(const TetMesh& mesh, const RegionComplex& region,
   for (int k = 0; k < 2; ++k) {
     local[k] = shortestPath(mesh, region, pairs[k][0], pairs[k][1], blocked, s.pathLengths[k]);
     if (local[k].empty()) {
-      s.problem = "no path in the region joins the ends of pair " + std::to_string(k + 1);
+      s.problem = k == 0 ? "no path in the region joins the ends of the first pair"
+                         : "no path in the region joins the ends of the second pair without "
+                           "meeting the first pair's path (the paths would intersect)";
       return s;
     }
     if (k == 1) break;
