@@ -109,7 +109,11 @@ Setup setUp(const TetMesh& mesh, const DegenerateCurves& all, const ReconnectCur
     for (std::size_t i = 0; i < d.size(); ++i) {
       const std::vector<int> tets = tetsOfSource(mesh, c.sources[i]);
       if (d[i] <= 0.5 * segmentLength) core.insert(core.end(), tets.begin(), tets.end());
-      if (d[i] > 0.5 * segmentLength + 3 * h) far[k].insert(far[k].end(), tets.begin(), tets.end());
+      // An open curve's ends (on the domain surface) are always kept out: a segment must leave
+      // the region through its held boundary, not end in it.
+      const bool end = !c.closed && (i == 0 || i + 1 == d.size());
+      if (end || d[i] > 0.5 * segmentLength + 3 * h)
+        far[k].insert(far[k].end(), tets.begin(), tets.end());
     }
   }
   s.seeds = withNeighbourTets(mesh, core);

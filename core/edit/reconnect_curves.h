@@ -5,7 +5,8 @@
 // same curve, e.g. a loop to break in two; both of one L/P type); the segment of each around
 // its pick (`segmentLength` of curve, half on each side) seeds the region, and every tet
 // around another curve, or around the picked curves farther than the segments (plus a margin
-// of three mean edge lengths, where the region's boundary cuts them; seeds excepted), is forbidden
+// of three mean edge lengths, where the region's boundary cuts them; seeds excepted), and
+// around an open picked curve's ends on the domain surface, is forbidden
 // (edit_driver.h); grow a ball region out to `regionDistance` (core/region/ball_region.h) and
 // check it independently (its vertices on the domain surface are held like those on its
 // boundary inside the volume: a new curve must not end on the surface); the segments run through it

@@ -122,8 +122,9 @@ DegeneratePattern analyticPattern(const std::function<Complex(const Vec3&)>& W, 
 
 /// Whether some curve holds both points (within 1e-6 mean edge lengths: the extraction's
 /// fallback perturbation may move the ends that much, reconnect_verification.h).
-bool sameCurveHolds(const DegenerateCurves& curves, const Vec3& a, const Vec3& b) {
-  const double tolerance = 1e-6 * box()->meanEdgeLength();
+bool sameCurveHolds(const DegenerateCurves& curves, const Vec3& a, const Vec3& b,
+                    const TetMesh& mesh = *box()) {
+  const double tolerance = 1e-6 * mesh.meanEdgeLength();
   for (const DegenerateCurve& c : curves.curves()) {
     bool ha = false, hb = false;
     for (const Vec3& p : c.points) {
@@ -142,14 +143,16 @@ ReconnectCurvesOptions options(const Scenario& s) {
   return o;
 }
 
-void expectReconnected(const Scenario& s) {
+void expectReconnected(const Scenario& s, const std::shared_ptr<const TetMesh>& mesh = box(),
+                       double segmentLength = -1) {
   SCOPED_TRACE(s.name);
-  const auto mesh = box();
   const TensorField field =
       testing::designedField(mesh, s.W, [](const Vec3&) { return upFrame(); });
   const DegenerateCurves before = extractDegenerateCurves(field);
   ASSERT_EQ(before.size(), 2u) << before.summary();
-  const ReconnectCurvesResult r = reconnectCurves(field, options(s));
+  ReconnectCurvesOptions o = options(s);
+  o.segmentLength = segmentLength;
+  const ReconnectCurvesResult r = reconnectCurves(field, o);
   const ReconnectCurvesReport& rep = r.report;
   for (const std::string& line : rep.lines()) std::printf("  %s\n", line.c_str());
   // Theorem 6.2's pairing, worked out by hand from the geometry.
@@ -168,10 +171,11 @@ void expectReconnected(const Scenario& s) {
   // The new curves join the paired ends (searched independently in the returned curves), and
   // the returned curves are the field's.
   for (int i = 0; i < 2; ++i)
-    EXPECT_TRUE(sameCurveHolds(r.curves, rep.ends[i].position, rep.ends[rep.partner[i]].position))
+    EXPECT_TRUE(
+        sameCurveHolds(r.curves, rep.ends[i].position, rep.ends[rep.partner[i]].position, *mesh))
         << "end " << i;
-  EXPECT_FALSE(sameCurveHolds(r.curves, rep.ends[0].position, rep.ends[1].position) &&
-               sameCurveHolds(r.curves, rep.ends[2].position, rep.ends[3].position))
+  EXPECT_FALSE(sameCurveHolds(r.curves, rep.ends[0].position, rep.ends[1].position, *mesh) &&
+               sameCurveHolds(r.curves, rep.ends[2].position, rep.ends[3].position, *mesh))
       << "the old connection is still there";
   EXPECT_EQ(extractDegenerateCurves(r.field).size(), r.curves.size());
   // The region is a ball; outside its free vertices nothing changed bitwise.
@@ -200,6 +204,13 @@ TEST(ReconnectCurves, CaseBTwoWedgesSwapEnds) { expectReconnected(scenarios()[2]
 TEST(ReconnectCurves, CaseCTwoTrisectorsSwapEnds) { expectReconnected(scenarios()[3]); }
 TEST(ReconnectCurves, CaseDAWedgeAndAMixedCurve) { expectReconnected(scenarios()[4]); }
 TEST(ReconnectCurves, CaseETwoMixedCurvesOnOneSide) { expectReconnected(scenarios()[5]); }
+
+TEST(ReconnectCurves, EveryScenarioOnACarvedBall) {
+  // The same six scenarios on a second solid: a ball carved from a jittered box (its surface
+  // cuts the curves, which end there; the region keeps away from those ends).
+  static const auto ball = testing::carvedBall(18);
+  for (const Scenario& s : scenarios()) expectReconnected(s, ball);
+}
 
 TEST(ReconnectCurves, BreaksAMixedLoopInTwo) {
   // The circle x² + z² = 0.36, y = 0: with e up, its right half is a wedge and its left half a
