@@ -105,6 +105,15 @@ Setup setUp(const TetMesh& mesh, const DegenerateCurves& all, const ReconnectCur
       if (s.picks[q].curveId != c.id) continue;
       const std::vector<double> dq = arcDistances(c, s.picks[q]);
       for (std::size_t i = 0; i < d.size(); ++i) d[i] = std::min(d[i], dq[i]);
+      // A segment must leave the region through its held boundary before the curve ends on
+      // the domain surface: refused when that end is within the segment (and an edge).
+      const double toEnd =
+          c.closed ? std::numeric_limits<double>::infinity() : std::min(dq.front(), dq.back());
+      if (toEnd <= 0.5 * segmentLength + h)
+        throw Error("picks: " + describeCurve(c) + " ends on the domain surface " +
+                    editNumber(toEnd) + " along the curve from the pick, within half the " +
+                    "segment (" + editNumber(0.5 * segmentLength) + ") and an edge length: move " +
+                    "the pick or shorten segment_length");
     }
     for (std::size_t i = 0; i < d.size(); ++i) {
       const std::vector<int> tets = tetsOfSource(mesh, c.sources[i]);

@@ -27,6 +27,7 @@
 #include "core/region/region_vertices.h"
 #include "core/topology/extract_degenerate_curves.h"
 #include "tests/core/design/curve_test_meshes.h"
+#include "tests/core/edit/reconnect_test_fields.h"
 #include "tests/core/edit/removal_test_fields.h"
 
 namespace tfd::core {
@@ -39,70 +40,9 @@ std::shared_ptr<const TetMesh> box() {
   return mesh;
 }
 
-testing::Frame upFrame() {
-  const Vec3 e = Vec3(0.08, 0.12, 1).normalized();
-  const Vec3 u = e.cross(Vec3(0.2, 1, 0.1)).normalized();
-  return {e, u, e.cross(u)};
-}
-
-/// A mixed cap z = z0 − k (x − x0)², y = y0 (both ends down), wedge on its x > x0 leg.
-Complex cap(const Vec3& p, double x0, double y0, double z0, double k = 1) {
-  const double dx = p.x() - x0;
-  return {k * dx * dx + p.z() - z0, p.y() - y0};
-}
-/// A mixed cup z = z0 + (x − x0)² (both ends up), wedge on its x > x0 leg.
-Complex cup(const Vec3& p, double z0) { return {p.x() * p.x() - p.z() + z0, p.y()}; }
-/// A vertical line through (x0, y0): pure wedge (or trisector when `trisector`).
-Complex line(const Vec3& p, double x0, double y0, bool trisector = false) {
-  const Complex w(p.x() - x0, p.y() - y0);
-  return trisector ? std::conj(w) : w;
-}
-
-/// w scaled by a positive function to |w| < 1 (so e stays the non-repeating eigenvector):
-/// the zero set and the sign of (∇f × ∇g) · e on it do not change.
-Complex bounded(Complex w) { return w / std::sqrt(1 + std::norm(w)); }
-
-struct Scenario {
-  const char* name;
-  std::function<Complex(const Vec3&)> W;
-  std::array<Vec3, 2> picks;
-  /// Whether the end at p (of the first picked segment) joins the end at q (of the second).
-  std::function<bool(const Vec3& p, const Vec3& q)> joins;
-};
-
-const std::vector<Scenario>& scenarios() {
-  static const std::vector<Scenario> s = {
-      {"a: wedge + trisector -> two mixed",
-       [](const Vec3& p) { return 0.5 * line(p, 0.3, 0) * line(p, -0.3, 0, true); },
-       {Vec3(0.3, 0, 0), Vec3(-0.3, 0, 0)},
-       [](const Vec3& p, const Vec3& q) { return (p.z() > 0) == (q.z() > 0); }},
-      {"a: two mixed -> wedge + trisector",
-       [](const Vec3& p) { return 0.3 * cap(p, 0, 0, -0.2) * cup(p, 0.2); },
-       {Vec3(0, 0, -0.2), Vec3(0, 0, 0.2)},
-       [](const Vec3& p, const Vec3& q) { return (p.x() > 0) == (q.x() > 0); }},
-      {"b: wedge + wedge",
-       [](const Vec3& p) { return 0.5 * line(p, 0.3, 0.1) * line(p, -0.3, -0.1); },
-       {Vec3(0.3, 0.1, 0), Vec3(-0.3, -0.1, 0)},
-       [](const Vec3& p, const Vec3& q) { return (p.z() > 0) != (q.z() > 0); }},
-      {"c: trisector + trisector",
-       [](const Vec3& p) { return 0.5 * line(p, 0.3, 0.1, true) * line(p, -0.3, -0.1, true); },
-       {Vec3(0.3, 0.1, 0), Vec3(-0.3, -0.1, 0)},
-       [](const Vec3& p, const Vec3& q) { return (p.z() > 0) != (q.z() > 0); }},
-      {"d: wedge + mixed",
-       [](const Vec3& p) { return bounded(line(p, 0.45, 0.25) * cap(p, -0.25, 0, 0.1, 2)); },
-       {Vec3(0.45, 0.25, 0.1), Vec3(-0.25, 0, 0.1)},
-       // The line's top end joins the cap's wedge (right) leg, its bottom end the left leg.
-       [](const Vec3& p, const Vec3& q) { return (p.z() > 0.1) == (q.x() > -0.25); }},
-      {"e: mixed + mixed, same side",
-       [](const Vec3& p) {
-         return bounded(cap(p, -0.4, -0.1, -0.1, 6) * cap(p, 0.4, 0.1, -0.1, 6));
-       },
-       {Vec3(-0.4, -0.1, -0.1), Vec3(0.4, 0.1, -0.1)},
-       // The first cap's right (wedge) leg joins the second's left (trisector) leg.
-       [](const Vec3& p, const Vec3& q) { return (p.x() > -0.4) != (q.x() > 0.4); }},
-  };
-  return s;
-}
+using testing::Scenario;
+using testing::scenarios;
+using testing::upFrame;
 
 bool bitwiseEqual(const Tensor& a, const Tensor& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
@@ -395,6 +335,9 @@ TEST(ReconnectCurves, BadInputIsAClearError) {
   o = options(s);
   o.picks[1] = Vec3(0.3, 0, 0.05);  // the same segment twice
   EXPECT_NE(message(o).find("same segment"), std::string::npos) << message(o);
+  o = options(s);
+  o.picks[0] = Vec3(0.3, 0, 0.9);  // 0.1 from where the line ends on the box's top face
+  EXPECT_NE(message(o).find("ends on the domain surface"), std::string::npos) << message(o);
   o = options(s);
   o.retries = -1;
   EXPECT_NE(message(o).find("retries"), std::string::npos);
