@@ -8,6 +8,14 @@
 //  - DeformCurve1M: the straight curve x = y = 0 of a field on the same 1M-tet box bent onto a
 //    smooth bump of height 0.3 (paper §6.1), verification included, for several region
 //    distances.
+//  - ReconnectLines1M: a pure wedge line and a pure trisector line of a field on the same
+//    1M-tet box reconnected into two mixed curves (paper §6.2, Fig. 11a), verification
+//    included, for several region distances.
+//  - RandomReconnections: reconnections on the six designed scenarios of Fig. 11
+//    (tests/core/edit/reconnect_test_fields.h) with random picks on the middle half of the two
+//    curves, random
+//    segment lengths and region distances; counts verified, refused (no region / segments that
+//    do not leave it) and failed (no try verified), with the failed checks.
 // Commands and figures: bench/RESULTS.md.
 #include <benchmark/benchmark.h>
 
@@ -22,6 +30,7 @@
 
 #include "core/design/propagate.h"
 #include "core/edit/deform_curve.h"
+#include "core/edit/reconnect_curves.h"
 #include "core/edit/remove_curves.h"
 #include "core/structured_mesh.h"
 #include "core/surface/primitives.h"
@@ -29,6 +38,7 @@
 #include "io/mesh/surface_readers.h"
 #include "io/tetgen/tetgen_mesher.h"
 #include "tests/core/design/curve_test_meshes.h"
+#include "tests/core/edit/reconnect_test_fields.h"
 #include "tests/core/edit/removal_test_fields.h"
 
 namespace {
@@ -202,6 +212,94 @@ struct Tally {
     refusals += o.refusals, failures += o.failures;
   }
 };
+
+void ReconnectLines1M(benchmark::State& state) {
+  static const TensorField field =
+      testing::designedField(makeBoxMesh(55, 55, 55, Vec3(-1, -1, -1), Vec3(1, 1, 1)),
+                             [](const Vec3& p) { return testing::twoLinesW(p, 0.3); });
+  ReconnectCurvesOptions o;
+  o.picks = {Vec3(0.3, 0, 0), Vec3(-0.3, 0, 0)};
+  o.regionDistance = state.range(0) < 0 ? -1 : state.range(0) / 100.0;
+  ReconnectCurvesResult last{field, {}, {}, {}};
+  bool verified = true;
+  for (auto _ : state) {
+    try {
+      last = reconnectCurves(field, o);
+    } catch (const ReconnectionFailed& e) {  // reported, not hidden
+      verified = false;
+      state.SetLabel(e.what());
+    }
+  }
+  state.counters["verified"] = verified;
+  state.counters["tets"] = double(field.mesh().tetCount());
+  state.counters["region_tets"] = double(last.report.regionTets);
+  state.counters["sheet_tets"] = double(last.report.sheetTets);
+  state.counters["solved"] = double(last.report.sheetSolved + last.report.sidesSolved);
+  state.counters["tries"] = double(last.report.tries.size());
+  state.counters["curves_after"] = double(last.curves.size());
+  state.counters["peak_MB"] = peakMegabytes();
+}
+BENCHMARK(ReconnectLines1M)
+    ->Arg(10)
+    ->Arg(20)
+    ->Arg(-1)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1)
+    ->Repetitions(2)
+    ->ReportAggregatesOnly(false);
+
+void RandomReconnections(benchmark::State& state) {
+  const auto mesh = testing::jitteredBox(18, 0.15);
+  const auto& scenarios = testing::scenarios();
+  std::vector<TensorField> fields;
+  std::vector<DegenerateCurves> curves;
+  for (const auto& s : scenarios) {
+    fields.push_back(
+        testing::designedField(mesh, s.W, [](const Vec3&) { return testing::upFrame(); }));
+    curves.push_back(extractDegenerateCurves(fields.back()));
+  }
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> unit(0, 1);
+  int verified = 0, refused = 0, failed = 0, retried = 0;
+  std::map<std::string, int> reasons;
+  for (auto _ : state) {
+    for (int i = 0; i < state.range(0); ++i) {
+      const std::size_t k = std::size_t(i) % scenarios.size();
+      ReconnectCurvesOptions o;
+      for (const Vec3& p : scenarios[k].picks) {
+        const DegenerateCurve& c = curves[k].curve(curves[k].pick(p)->curveId);
+        // Anywhere on the middle half of the curve (a user picks away from its ends).
+        const double at = 0.25 + 0.5 * unit(rng);
+        o.picks.push_back(c.points[std::size_t(at * double(c.points.size() - 1))]);
+      }
+      o.segmentLength = 0.3 + 0.5 * unit(rng);
+      o.regionDistance = 0.15 + 0.25 * unit(rng);
+      o.curves = &curves[k];
+      try {
+        const ReconnectCurvesResult r = reconnectCurves(fields[k], o);
+        ++verified;
+        retried += r.report.tries.size() > 1;
+      } catch (const ReconnectionFailed& e) {
+        ++failed;
+        const std::string m = e.what();
+        const auto a = m.find("check '"), b = m.find('\'', a + 7);
+        ++reasons["failed: " + m.substr(a + 7, b - a - 7)];
+      } catch (const Error& e) {
+        ++refused;
+        ++reasons["refused: " + std::string(e.what()).substr(0, 60)];
+      }
+    }
+  }
+  for (const auto& [reason, count] : reasons) std::printf("  %4d  %s\n", count, reason.c_str());
+  state.counters["attempts"] = double(state.range(0));
+  state.counters["verified"] = verified;
+  state.counters["verified_after_retry"] = retried;
+  state.counters["refused"] = refused;
+  state.counters["failed"] = failed;
+  state.counters["success_of_possible"] =
+      verified + failed > 0 ? double(verified) / double(verified + failed) : 0.0;
+}
+BENCHMARK(RandomReconnections)->Arg(120)->Iterations(1)->Unit(benchmark::kSecond);
 
 void RandomRemovals(benchmark::State& state) {
   const auto solids = randomSolids();

@@ -14,6 +14,7 @@ void registerPropagate(graph::NodeRegistry&);
 void registerLocalSmooth(graph::NodeRegistry&);
 void registerRemoveCurves(graph::NodeRegistry&);
 void registerDeformCurve(graph::NodeRegistry&);
+void registerReconnectCurves(graph::NodeRegistry&);
 void registerExtractDegenerateCurves(graph::NodeRegistry&);
 void registerGaborNoise(graph::NodeRegistry&);
 void registerExportVtu(graph::NodeRegistry&);
@@ -36,6 +37,7 @@ void registerAll(graph::NodeRegistry& registry) {
   registerLocalSmooth(registry);
   registerRemoveCurves(registry);
   registerDeformCurve(registry);
+  registerReconnectCurves(registry);
   registerExtractDegenerateCurves(registry);
   registerGaborNoise(registry);
   registerExportVtu(registry);

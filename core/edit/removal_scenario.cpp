@@ -32,6 +32,8 @@ const char* toString(RemovalScenario s) {
       return "two-curve";
     case RemovalScenario::OneLoop:
       return "one-loop";
+    case RemovalScenario::TwoLoop:
+      return "two-loop";
   }
   return "?";
 }
@@ -62,11 +64,10 @@ RemovalScenario removalScenario(std::span<const DegenerateCurve* const> targets)
     const std::string what = describeCurve(c);
     if (c.closed) {
       if (n.wedge > 0 && n.trisector > 0) return RemovalScenario::OneLoop;
-      throw RemovalRefused(
-          what + " is a pure " + (n.wedge > 0 ? "wedge" : "trisector") +
-          " loop: it cannot be removed alone (it cancels only with a pure " +
-          (n.wedge > 0 ? "trisector" : "wedge") +
-          " loop of the same type, the two-loop removal, which is not supported yet)");
+      throw RemovalRefused(what + " is a pure " + (n.wedge > 0 ? "wedge" : "trisector") +
+                           " loop: it cannot be removed alone (it cancels only with a pure " +
+                           (n.wedge > 0 ? "trisector" : "wedge") +
+                           " loop of the same type: pick both, the two-loop removal)");
     }
     const auto a = endPattern(c, true), b = endPattern(c, false);
     if (a && b && *a != *b) return RemovalScenario::OneCurve;
@@ -81,10 +82,21 @@ RemovalScenario removalScenario(std::span<const DegenerateCurve* const> targets)
   }
   const DegenerateCurve &c0 = *targets[0], &c1 = *targets[1];
   const std::string both = describeCurve(c0) + " and " + describeCurve(c1);
+  if (c0.closed && c1.closed) {
+    const std::string p0 = pure(patternCounts(c0)), p1 = pure(patternCounts(c1));
+    if (c0.type == c1.type && !p0.empty() && !p1.empty() && p0 != p1)
+      return RemovalScenario::TwoLoop;
+    throw RemovalRefused("cannot remove " + both +
+                         " together: two-loop removal cancels a pure wedge loop with a pure "
+                         "trisector loop of the same L/P type (these are " +
+                         std::string(toString(c0.type)) + " " + (p0.empty() ? "mixed" : p0) +
+                         " and " + toString(c1.type) + " " + (p1.empty() ? "mixed" : p1) + ")");
+  }
   if (c0.closed || c1.closed)
     throw RemovalRefused("cannot remove " + both +
-                         " together: two-curve removal takes two open curves (a loop is removed "
-                         "alone, one-loop removal, when it has wedge and trisector parts)");
+                         " together: two-curve removal takes two open curves, two-loop removal "
+                         "two loops (a loop is removed alone, one-loop removal, when it has "
+                         "wedge and trisector parts)");
   if (c0.type != c1.type)
     throw RemovalRefused("cannot remove " + both +
                          " together: two-curve removal needs two curves of the same L/P type");

@@ -2,10 +2,12 @@
 // Which removal of paper §6.4 (Fig. 17) applies to the curves a user picked:
 //  - one-curve: one open curve whose two ends are of opposite pattern (wedge / trisector);
 //  - two-curve: an open pure wedge curve and an open pure trisector curve of the same L/P type;
-//  - one-loop: one loop with both wedge and trisector parts.
-// For these the enclosing region is a ball (§6.4). Anything else is refused with the reason;
-// the two-loop case (a pure wedge loop with a pure trisector loop: a solid torus) is not one of
-// them. Transition points are ignored when reading a curve's patterns.
+//  - one-loop: one loop with both wedge and trisector parts;
+//  - two-loop: a pure wedge loop and a pure trisector loop of the same L/P type.
+// For the first three the enclosing region is a ball (§6.4); for two loops it is a solid torus,
+// so the removal is the paper's composite: reconnect the loops into one mixed loop (§6.2), then
+// remove that (remove_curves.h). Anything else is refused with the reason. Transition points
+// are ignored when reading a curve's patterns.
 #include <span>
 #include <string>
 
@@ -14,8 +16,9 @@
 
 namespace tfd::core {
 
-enum class RemovalScenario { OneCurve, TwoCurve, OneLoop };
-const char* toString(RemovalScenario scenario);  ///< "one-curve", "two-curve", "one-loop"
+enum class RemovalScenario { OneCurve, TwoCurve, OneLoop, TwoLoop };
+/// "one-curve", "two-curve", "one-loop", "two-loop"
+const char* toString(RemovalScenario scenario);
 
 /// A pick the removal cannot do (no scenario applies, no ball region avoids the other curves):
 /// the user's input is at fault, not the algorithm.

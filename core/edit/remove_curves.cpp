@@ -7,7 +7,9 @@
 #include <limits>
 #include <optional>
 
+#include "core/edit/edit_driver.h"
 #include "core/edit/edit_verification.h"
+#include "core/edit/remove_two_loops.h"
 #include "core/edit/singularity_free_field.h"
 #include "core/edit/vectorise_eigenvector.h"
 #include "core/region/ball_check.h"
@@ -21,12 +23,6 @@ namespace {
 
 /// Regrowths of one try around sign conflicts before the conflict is left to fail the try.
 constexpr int kConflictRegrowths = 8;
-
-std::string number(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3g", x);
-  return buf;
-}
 
 /// Shortest distance between the points of `a` and the polyline of `b`.
 double curveDistance(const DegenerateCurve& a, const DegenerateCurve& b) {
@@ -54,46 +50,27 @@ Targets resolveTargets(const TetMesh& mesh, const DegenerateCurves& all,
   if (o.picks.empty() || o.picks.size() > 2)
     throw Error("picks: give one or two points (got " + std::to_string(o.picks.size()) + ")");
   if (all.empty()) throw Error("the field has no degenerate curves to remove");
-  const DegenerateCurves& pickFrom = o.curves ? *o.curves : all;
-  const double tolerance = 1e-9 * (mesh.boundsMax() - mesh.boundsMin()).norm();
   Targets t;
   for (const Vec3& p : o.picks) {
     if (!p.allFinite()) throw Error("picks: a pick is not a finite point");
-    const std::optional<CurvePick> seen = pickFrom.pick(p);
-    if (!seen) throw Error("curves: the given curves are empty");
-    int id = seen->curveId;
-    if (o.curves) {
-      const CurvePick mapped = *all.pick(seen->position);
-      if (mapped.distance > tolerance)
-        throw Error("curves: the given curves do not belong to the field (the picked curve is " +
-                    number(mapped.distance) + " from every curve of the field)");
-      id = mapped.curveId;
-    }
+    const CurvePick pick = resolveCurvePick(mesh, all, o.curves, p);
+    const int id = pick.curveId;
     if (std::find(t.ids.begin(), t.ids.end(), id) != t.ids.end()) continue;
     t.ids.push_back(id);
     t.curves.push_back(&all.curve(id));
-    t.pickDistances.push_back(seen->distance);
+    t.pickDistances.push_back(pick.distance);
   }
   return t;
 }
 
-std::vector<int> sourceTets(const TetMesh& mesh, const DegenerateCurve& c) {
-  std::vector<int> tets;
-  for (const PointSource& s : c.sources)
-    for (int t : tetsOfSource(mesh, s)) tets.push_back(t);
-  return tets;
-}
-
 /// Seeds: the tets holding the targets and every tet around their vertices.
 std::vector<int> seedTets(const TetMesh& mesh, const Targets& targets) {
-  std::vector<int> seeds;
-  for (const DegenerateCurve* c : targets.curves)
-    for (int t : sourceTets(mesh, *c))
-      for (int v : mesh.tets()[t])
-        for (int n : mesh.vertexTets(v)) seeds.push_back(n);
-  std::sort(seeds.begin(), seeds.end());
-  seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
-  return seeds;
+  std::vector<int> tets;
+  for (const DegenerateCurve* c : targets.curves) {
+    const std::vector<int> own = curveSourceTets(mesh, *c);
+    tets.insert(tets.end(), own.begin(), own.end());
+  }
+  return withNeighbourTets(mesh, tets);
 }
 
 /// Owner code of tets forbidden around a sign-conflict edge: −2 − edge id (curves are ≥ 0).
@@ -108,8 +85,8 @@ int conflictOwner(int edge) { return -2 - edge; }
     for (const DegenerateCurve* c : targets.curves)
       names += (names.empty() ? "" : " and ") + describeCurve(*c);
     throw RemovalRefused(
-        "no ball region around " + names + " avoids the place near (" + number(at.x()) + ", " +
-        number(at.y()) + ", " + number(at.z()) + ") where the " +
+        "no ball region around " + names + " avoids the place near (" + editNumber(at.x()) + ", " +
+        editNumber(at.y()) + ", " + editNumber(at.z()) + ") where the " +
         (type == DegenerateType::Linear ? "major" : "minor") +
         " eigenvector cannot be oriented (a degenerate point of the other type that the mesh "
         "does not resolve into a curve)");
@@ -122,7 +99,7 @@ int conflictOwner(int edge) { return -2 - edge; }
     names += (names.empty() ? "" : " and ") + describeCurve(*c);
   }
   throw RemovalRefused("no ball region around " + names + " avoids " + describeCurve(other) + ", " +
-                       number(d) + " away: the region would have to cut it");
+                       editNumber(d) + " away: the region would have to cut it");
 }
 
 /// Forbids one more ring of tets (every tet around a vertex of a forbidden tet not caused by
@@ -146,27 +123,16 @@ bool widenAroundCurves(const TetMesh& mesh, const std::vector<int>& seeds,
   return true;
 }
 
-/// The removal's final error after every try failed its verification.
-[[noreturn]] void failAfterTries(const std::vector<RemovalTry>& tries) {
-  const RemovalTry& last = tries.back();
-  std::string earlier;
-  for (std::size_t i = 0; i + 1 < tries.size(); ++i)
-    earlier += "; try " + std::to_string(i + 1) + " (" + std::to_string(tries[i].regionTets) +
-               " tets): " + tries[i].failedCheck + " (" + tries[i].detail + ")";
-  throw RemovalFailed("verification failed after " + std::to_string(tries.size()) +
-                      " tries: check '" + last.failedCheck + "' failed (" + last.detail +
-                      "); last region " + std::to_string(last.regionTets) + " tets (distance " +
-                      number(last.distance) + ")" + earlier);
-}
-
 }  // namespace
 
 std::vector<std::string> RemoveCurvesReport::lines() const {
   std::vector<std::string> out;
   std::string head = std::string(toString(scenario)) + " removal of ";
   for (std::size_t i = 0; i < targets.size(); ++i)
-    head += (i ? " and " : "") + targets[i] + " (picked " + number(pickDistances[i]) + " away)";
+    head += (i ? " and " : "") + targets[i] + " (picked " + editNumber(pickDistances[i]) + " away)";
   out.push_back(head);
+  for (const std::string& line : reconnection) out.push_back("step 1 (reconnection): " + line);
+  if (!reconnection.empty()) out.push_back("step 2: one-loop removal of the merged loop");
   out.push_back("region: " + std::to_string(regionTets) + " tets, " +
                 std::to_string(regionVertices) + " vertices (" + std::to_string(freeVertices) +
                 " free, " + std::to_string(heldVertices) + " held; " +
@@ -182,15 +148,9 @@ std::vector<std::string> RemoveCurvesReport::lines() const {
   std::string t = "tries: " + std::to_string(tries.size());
   if (widenings > 0)
     t += " (" + std::to_string(widenings) + " with one more ring of tets kept from other curves)";
-  for (std::size_t i = 0; i < tries.size(); ++i) {
-    t +=
-        "; #" + std::to_string(i + 1) + " distance " + number(tries[i].distance) + ", " +
-        std::to_string(tries[i].regionTets) + " tets: " +
-        (tries[i].failedCheck.empty() ? "verified"
-                                      : tries[i].failedCheck + " failed (" + tries[i].detail + ")");
-  }
+  t += describeTries(tries);
   out.push_back(t);
-  out.push_back("time " + number(seconds) + " s");
+  out.push_back("time " + editNumber(seconds) + " s");
   out.push_back(std::to_string(curvesBefore) + " curves -> " + std::to_string(curvesAfter));
   return out;
 }
@@ -199,8 +159,7 @@ RemoveCurvesResult removeCurves(const TensorField& field, const RemoveCurvesOpti
                                 const Progress& progress) {
   const auto start = std::chrono::steady_clock::now();
   const TetMesh& mesh = field.mesh();
-  if (!(o.retries >= 0) || !(o.growFactor > 1) || !std::isfinite(o.regionDistance))
-    throw Error("retries must be ≥ 0, the grow factor > 1 and region_distance finite");
+  const EditRetries plan = editRetries(mesh, o.regionDistance, o.retries, o.growFactor);
   progress.report(0, "extracting curves");
   const DegenerateCurves all = extractDegenerateCurves(field, o.extract, progress);
   const Targets targets = resolveTargets(mesh, all, o);
@@ -209,29 +168,20 @@ RemoveCurvesResult removeCurves(const TensorField& field, const RemoveCurvesOpti
   for (const DegenerateCurve* c : targets.curves) report.targets.push_back(describeCurve(*c));
   report.pickDistances = targets.pickDistances;
   report.curvesBefore = all.size();
+  if (report.scenario == RemovalScenario::TwoLoop)
+    return removeTwoLoops(field, o, *targets.curves[0], *targets.curves[1], std::move(report),
+                          progress);
   const DegenerateType type = targets.curves[0]->type;
 
-  std::vector<unsigned char> forbidden(mesh.tetCount(), 0);
-  std::vector<int> owner(mesh.tetCount(), -1);
-  for (const DegenerateCurve& c : all.curves()) {
-    if (std::find(targets.ids.begin(), targets.ids.end(), c.id) != targets.ids.end()) continue;
-    // The curve's tets and every tet around their vertices: then no vertex of the curve's tets
-    // is a region vertex, and neither are their neighbours' values, which the extraction's
-    // fallback perturbation looks at (its scale comes from the tensors around a vertex).
-    for (int t : sourceTets(mesh, c))
-      for (int v : mesh.tets()[t])
-        for (int n : mesh.vertexTets(v))
-          if (!forbidden[n]) forbidden[n] = 1, owner[n] = c.id;
-  }
+  ForbiddenTets forbid = forbidOtherCurves(mesh, all, targets.ids);
+  std::vector<unsigned char>& forbidden = forbid.flag;
+  std::vector<int>& owner = forbid.owner;
   const std::vector<int> seeds = seedTets(mesh, targets);
   for (int s : seeds)
     if (forbidden[s]) refuseCut(mesh, all, targets, type, owner[s]);
 
-  const double radius = 0.5 * (mesh.boundsMax() - mesh.boundsMin()).norm();
-  const double distance0 = o.regionDistance < 0 ? 0.3 * radius : o.regionDistance;
-  for (int k = 0; k <= o.retries; ++k) {
-    RemovalTry attempt;
-    attempt.distance = distance0 * std::pow(o.growFactor, k);
+  std::optional<RemoveCurvesResult> result;
+  auto attemptTry = [&](int k, RemovalTry& attempt) {
     // After a failed re-extraction (a new curve or a piece of a target in the region), the
     // retry also keeps one more ring of tets away from the other curves: next to them the held
     // eigenvalue gaps are small and the new field turns fast across the tets there, where the
@@ -241,7 +191,6 @@ RemoveCurvesResult removeCurves(const TensorField& field, const RemoveCurvesOpti
                   report.tries.back().failedCheck == "targets gone")) {
       if (widenAroundCurves(mesh, seeds, forbidden, owner)) ++report.widenings;
     }
-    progress.report(0.1 + 0.8 * k / (o.retries + 1), "growing the region");
     const BallRegion region = growBallRegion(mesh, seeds, forbidden, {attempt.distance}, progress);
     if (!region.complete) {
       if (region.blockingTet >= 0) refuseCut(mesh, all, targets, type, owner[region.blockingTet]);
@@ -266,14 +215,12 @@ RemoveCurvesResult removeCurves(const TensorField& field, const RemoveCurvesOpti
         // curve's, and this try grows its region again.
         for (int e : vec.conflictEdges)
           for (int v : mesh.edges()[e])
-            for (int n : mesh.vertexTets(v))
-              if (!forbidden[n]) forbidden[n] = 1, owner[n] = conflictOwner(e);
+            for (int n : mesh.vertexTets(v)) forbid.add(n, conflictOwner(e));
         for (int s : seeds)
           if (forbidden[s]) refuseCut(mesh, all, targets, type, owner[s]);
         ++report.conflictRegrowths;
         report.conflictEdges += vec.signConflicts;
-        --k;
-        continue;
+        return TryOutcome::Again;
       }
       report.flow = boundaryFlow(mesh, region.tets, vec);
       report.signConflicts = vec.signConflicts;
@@ -285,32 +232,30 @@ RemoveCurvesResult removeCurves(const TensorField& field, const RemoveCurvesOpti
         attempt.failedCheck = "singularity-free field", attempt.detail = e.what();
       }
     }
-    if (attempt.failedCheck.empty()) {
-      DegenerateCurves after = extractDegenerateCurves(edited, o.extract, progress);
-      const EditVerification v =
-          verifyEdit(field, edited, rv.free, region.tets, all, after, targets.ids);
-      attempt.failedCheck = v.failedCheck, attempt.detail = v.detail;
-      if (v.passed) {
-        report.tries.push_back(attempt);
-        report.regionTets = region.tets.size();
-        report.regionVertices = rv.vertices.size();
-        report.freeVertices = rv.free.size();
-        report.heldVertices = rv.vertices.size() - rv.free.size();
-        report.freeOnSurface = rv.freeOnSurface;
-        report.surfaceFaces = rv.surfaceFaces;
-        report.growStop = region.growStop, report.shrinkStop = region.shrinkStop;
-        report.growOutStop = region.growOutStop;
-        report.curvesAfter = after.size();
-        report.seconds =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        progress.report(1, "verified");
-        return {std::move(edited), std::move(after), region.tets, std::move(report)};
-      }
-    }
-    report.tries.push_back(attempt);
-    if (k > 0 && report.tries[k - 1].regionTets == attempt.regionTets) break;  // cannot grow
-  }
-  failAfterTries(report.tries);
+    if (!attempt.failedCheck.empty()) return TryOutcome::Failed;
+    DegenerateCurves after = extractDegenerateCurves(edited, o.extract, progress);
+    const EditVerification v =
+        verifyEdit(field, edited, rv.free, region.tets, all, after, targets.ids);
+    attempt.failedCheck = v.failedCheck, attempt.detail = v.detail;
+    if (!v.passed) return TryOutcome::Failed;
+    report.regionTets = region.tets.size();
+    report.regionVertices = rv.vertices.size();
+    report.freeVertices = rv.free.size();
+    report.heldVertices = rv.vertices.size() - rv.free.size();
+    report.freeOnSurface = rv.freeOnSurface;
+    report.surfaceFaces = rv.surfaceFaces;
+    report.growStop = region.growStop, report.shrinkStop = region.shrinkStop;
+    report.growOutStop = region.growOutStop;
+    report.curvesAfter = after.size();
+    result = RemoveCurvesResult{std::move(edited), std::move(after), region.tets, {}};
+    return TryOutcome::Verified;
+  };
+  if (!runEditTries(plan, report.tries, progress, attemptTry))
+    failAfterTries<RemovalFailed>("verification", report.tries);
+  report.seconds = secondsSince(start);
+  result->report = std::move(report);
+  progress.report(1, "verified");
+  return std::move(*result);
 }
 
 }  // namespace tfd::core

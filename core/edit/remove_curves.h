@@ -1,6 +1,8 @@
 #pragma once
 // Degenerate curve removal (paper §6.4) for the scenarios whose region is a ball: one-curve,
-// two-curve and one-loop (removal_scenario.h), each verified by re-extraction.
+// two-curve and one-loop (removal_scenario.h), each verified by re-extraction; and two-loop
+// removal as the paper's composite of a reconnection and a one-loop removal
+// (remove_two_loops.h).
 //
 // Steps: extract the field's curves; name the targets by the picked points (never by index);
 // choose the scenario; forbid every tet holding a point of another curve; seed with the tets
@@ -74,6 +76,9 @@ struct RemoveCurvesReport {
   std::vector<RemovalTry> tries;
   double seconds = 0;
   std::size_t curvesBefore = 0, curvesAfter = 0;
+  /// Two-loop removal only: the info lines of step 1, the reconnection of the two loops into
+  /// one (remove_two_loops.h); the other fields then describe step 2, the one-loop removal.
+  std::vector<std::string> reconnection;
   /// The node's info lines: scenario and targets, region, region growth, boundary flow,
   /// tries, time, "14 curves -> 13".
   std::vector<std::string> lines() const;
