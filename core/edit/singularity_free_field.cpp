@@ -61,6 +61,25 @@ int centralVertex(const TetMesh& mesh, const RegionComplex& region) {
   return best;
 }
 
+/// N where it is smooth; its harmonic extension around edges where it turns by more than 30°
+/// next to a vertex where it is ill-defined: the gap between its eigenvalue and the nearest one
+/// below a tenth of the deviator's spread (core/edit/smooth_directions.h).
+DirectionRepair repairDirections(const TetMesh& mesh, const RegionComplex& region,
+                                 const std::vector<Vec3>& directions,
+                                 const std::vector<char>& fixed,
+                                 const std::vector<EigenDecomposition>& eig, DegenerateType type,
+                                 const Progress& progress) {
+  const int count = static_cast<int>(region.vertices.size());
+  std::vector<char> weak(count, 0);
+  forEach(count, [&](int i) {
+    const Vec3& l = eig[i].values;
+    const double own = type == DegenerateType::Linear ? l[0] - l[1] : l[1] - l[2];
+    weak[i] = own < kWeakGap * (l[0] - l[2]);
+  });
+  return repairRoughDirections(mesh, region, directions, fixed, weak, kMaxTurn, kRepairRings,
+                               progress);
+}
+
 void gaps(const Vec3& l, double& g12, double& g23) {
   g12 = std::min(g12, l[0] - l[1]);
   g23 = std::min(g23, l[1] - l[2]);
@@ -141,17 +160,8 @@ TensorField singularityFreeField(const TensorField& field, const RegionComplex& 
   for (int i = 0; i < count; ++i) hasTrace = hasTrace || (fixed[i] && trace[i] != 0);
   progress.throwIfCancelled();
 
-  // N where it is smooth; its harmonic extension around edges where it turns by more than 30°
-  // next to a vertex where it is ill-defined: the gap between its eigenvalue and the nearest
-  // one below a tenth of the deviator's spread (core/edit/smooth_directions.h).
-  std::vector<char> weak(count, 0);
-  forEach(count, [&](int i) {
-    const Vec3& l = eig[i].values;
-    const double own = type == DegenerateType::Linear ? l[0] - l[1] : l[1] - l[2];
-    weak[i] = own < kWeakGap * (l[0] - l[2]);
-  });
-  const DirectionRepair repaired = repairRoughDirections(mesh, region, n.directions, fixed, weak,
-                                                         kMaxTurn, kRepairRings, progress);
+  const DirectionRepair repaired =
+      repairDirections(mesh, region, n.directions, fixed, eig, type, progress);
   const std::vector<Vec3>& directions = repaired.directions;
   r.roughEdges = repaired.roughEdges;
   r.repairedDirections = repaired.solvedVertices;
