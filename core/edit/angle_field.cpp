@@ -1,5 +1,9 @@
 #include "core/edit/angle_field.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <array>
 #include <cmath>
 #include <deque>
 #include <string>
@@ -34,6 +38,36 @@ void checkEveryFreePieceIsHeld(const RegionComplex& region, const std::vector<ch
                   " is not connected to any held vertex of the region");
     }
   }
+}
+
+/// Cotangent weight K_ij (core/solve/laplacian.h) per local edge that touches a vertex with
+/// row[i] >= 0 (a free vertex), zero elsewhere: Σ over the region's tets around the edge, in
+/// ascending tet order, of tetStiffness. Every tet around a free vertex is a region tet, so
+/// these are the full mesh entries (the same sums as assembleStiffnessRows, in the same order),
+/// at a cost proportional to the region instead of the mesh.
+std::vector<double> edgeStiffness(const TetMesh& mesh, const RegionComplex& region,
+                                  const std::vector<int>& row) {
+  const int count = static_cast<int>(region.tets.size());
+  const auto& pos = mesh.positions();
+  std::vector<std::array<double, 6>> perTet(count);
+  std::vector<char> wanted(count, 0);
+  tbb::parallel_for(tbb::blocked_range<int>(0, count, 1024), [&](const tbb::blocked_range<int>& r) {
+    for (int lt = r.begin(); lt != r.end(); ++lt) {
+      const auto& v = mesh.tets()[region.tets[lt]];
+      bool touches = false;
+      for (int c = 0; c < 4; ++c) touches = touches || row[region.localVertex(v[c])] >= 0;
+      if (!touches) continue;
+      wanted[lt] = 1;
+      perTet[lt] = tetStiffness(pos[v[0]], pos[v[1]], pos[v[2]], pos[v[3]]);
+    }
+  });
+  std::vector<double> weight(region.edges.size(), 0.0);
+  for (int lt = 0; lt < count; ++lt) {  // sequential: each sum in ascending tet order
+    if (!wanted[lt]) continue;
+    const auto& edges = mesh.tetEdges()[region.tets[lt]];
+    for (int e = 0; e < 6; ++e) weight[region.localEdge(edges[e])] += perTet[lt][e];
+  }
+  return weight;
 }
 
 template <int W>
@@ -101,7 +135,13 @@ JumpSolveResult solveJumpLaplacian(const TetMesh& mesh, const RegionComplex& reg
   if (freeLocal.empty()) return result;
   checkEveryFreePieceIsHeld(region, held);
 
-  const StiffnessRows k = assembleStiffnessRows(mesh, freeMesh);
+  for (int i : freeLocal) {
+    for (int t : mesh.vertexTets(region.vertices[i]))
+      if (region.localTet(t) < 0)
+        throw Error("angle field: free vertex " + std::to_string(region.vertices[i]) +
+                    " has a tet outside the region");
+  }
+  const std::vector<double> weight = edgeStiffness(mesh, region, row);
   const int m = static_cast<int>(freeLocal.size());
   linalg::CsrMatrix<double> a;
   a.rows = a.cols = m;
@@ -109,18 +149,21 @@ JumpSolveResult solveJumpLaplacian(const TetMesh& mesh, const RegionComplex& reg
   std::vector<double> rhs(static_cast<std::size_t>(m) * width, 0.0), x(rhs.size());
   for (int r = 0; r < m; ++r) {
     const int i = freeLocal[r];
-    for (int e = k.matrix.start[r]; e < k.matrix.start[r + 1]; ++e) {
-      const int j = region.localVertex(k.matrix.index[e]);
-      const int edge = j < 0 || j == i ? -1 : regionEdge(region, i, j);
-      if (j != i && edge < 0) {
-        throw Error("angle field: free vertex " + std::to_string(region.vertices[i]) +
-                    " has a tet outside the region");
-      }
-      const double kij = k.matrix.value[e];
-      if (j != i) {  // r_i = Σ_j K_ij g_ij (Eq. 6)
-        for (int c = 0; c < width; ++c)
-          rhs[r * width + c] += kij * orientedJump(jumps[edge * width + c], i, j);
-      }
+    double offDiagonal = 0;
+    bool diagonalPlaced = false;
+    const auto placeDiagonal = [&] {
+      a.index.push_back(r);
+      a.value.push_back(0.0);  // set below, once the row's off-diagonal sum is known
+      diagonalPlaced = true;
+    };
+    std::size_t diagonal = 0;
+    for (int k = region.start[i]; k < region.start[i + 1]; ++k) {
+      const int j = region.neighbour[k], edge = region.neighbourEdge[k];
+      if (!diagonalPlaced && j > i) diagonal = a.index.size(), placeDiagonal();
+      const double kij = weight[edge];
+      offDiagonal += kij;
+      for (int c = 0; c < width; ++c)  // r_i = Σ_j K_ij g_ij (Eq. 6)
+        rhs[r * width + c] += kij * orientedJump(jumps[edge * width + c], i, j);
       if (row[j] >= 0) {
         a.index.push_back(row[j]);
         a.value.push_back(kij);
@@ -128,6 +171,8 @@ JumpSolveResult solveJumpLaplacian(const TetMesh& mesh, const RegionComplex& reg
         for (int c = 0; c < width; ++c) rhs[r * width + c] -= kij * values[j * width + c];
       }
     }
+    if (!diagonalPlaced) diagonal = a.index.size(), placeDiagonal();
+    a.value[diagonal] = -offDiagonal;  // rows of K sum to zero
     a.start[r + 1] = static_cast<int>(a.index.size());
     for (int c = 0; c < width; ++c) x[r * width + c] = values[i * width + c];
   }
@@ -149,6 +194,7 @@ JumpSolveResult solveJumpLaplacian(const TetMesh& mesh, const RegionComplex& reg
       solved = runCg<4>(a, rhs, x, amg, cg, progress);
       break;
   }
+
   for (int r = 0; r < m; ++r)
     for (int c = 0; c < width; ++c) values[freeLocal[r] * width + c] = x[r * width + c];
   result.iterations = solved.iterations;

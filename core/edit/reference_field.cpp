@@ -1,5 +1,8 @@
 #include "core/edit/reference_field.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -28,17 +31,22 @@ class Propagation {
       : mesh_(mesh), region_(region), n_(n) {
     const int tets = static_cast<int>(region.tets.size());
     tets_.resize(tets);
-    for (int lt = 0; lt < tets; ++lt) {
-      const int t = region.tets[lt];
-      RegionTet& r = tets_[lt];
-      for (int i = 0; i < 4; ++i) {
-        r.v[i] = region.localVertex(mesh.tets()[t][i]);
-        const auto& ft = mesh.faceTets()[mesh.tetFaces()[t][i]];
-        const int other = ft[0] == t ? ft[1] : ft[0];
-        r.nb[i] = other < 0 ? -1 : region.localTet(other);
-      }
-      for (int k = 0; k < 6; ++k) r.e[k] = region.localEdge(mesh.tetEdges()[t][k]);
-    }
+    // Each entry depends only on its tet: filled in parallel (the same for any thread count).
+    tbb::parallel_for(tbb::blocked_range<int>(0, tets, 1024),
+                      [&](const tbb::blocked_range<int>& b) {
+                        for (int lt = b.begin(); lt != b.end(); ++lt) {
+                          const int t = region.tets[lt];
+                          RegionTet& r = tets_[lt];
+                          for (int i = 0; i < 4; ++i) {
+                            r.v[i] = region.localVertex(mesh.tets()[t][i]);
+                            const auto& ft = mesh.faceTets()[mesh.tetFaces()[t][i]];
+                            const int other = ft[0] == t ? ft[1] : ft[0];
+                            r.nb[i] = other < 0 ? -1 : region.localTet(other);
+                          }
+                          for (int k = 0; k < 6; ++k)
+                            r.e[k] = region.localEdge(mesh.tetEdges()[t][k]);
+                        }
+                      });
     visited_.assign(tets, 0);
     hasU_.assign(region.vertices.size(), 0);
     known_.assign(region.edges.size(), 0);

@@ -13,11 +13,19 @@
 #include "core/edit/angle_field.h"
 #include "core/edit/reference_field.h"
 #include "core/edit/region_complex.h"
+#include "core/edit/smooth_directions.h"
 #include "core/edit/vectorise_eigenvector.h"
 #include "core/error.h"
 
 namespace tfd::core {
 namespace {
+
+/// Largest turn of N across a region edge next to a weak vertex kept as it is (radians), the
+/// relative gap below which a vertex's N is weak, and the vertex rings around rougher edges
+/// given the harmonic extension of N.
+constexpr double kMaxTurn = std::numbers::pi / 6;
+constexpr double kWeakGap = 0.1;
+constexpr int kRepairRings = 2;
 
 template <class F>
 void forEach(int n, F&& f) {
@@ -53,6 +61,25 @@ int centralVertex(const TetMesh& mesh, const RegionComplex& region) {
   return best;
 }
 
+/// N where it is smooth; its harmonic extension around edges where it turns by more than 30°
+/// next to a vertex where it is ill-defined: the gap between its eigenvalue and the nearest one
+/// below a tenth of the deviator's spread (core/edit/smooth_directions.h).
+DirectionRepair repairDirections(const TetMesh& mesh, const RegionComplex& region,
+                                 const std::vector<Vec3>& directions,
+                                 const std::vector<char>& fixed,
+                                 const std::vector<EigenDecomposition>& eig, DegenerateType type,
+                                 const Progress& progress) {
+  const int count = static_cast<int>(region.vertices.size());
+  std::vector<char> weak(count, 0);
+  forEach(count, [&](int i) {
+    const Vec3& l = eig[i].values;
+    const double own = type == DegenerateType::Linear ? l[0] - l[1] : l[1] - l[2];
+    weak[i] = own < kWeakGap * (l[0] - l[2]);
+  });
+  return repairRoughDirections(mesh, region, directions, fixed, weak, kMaxTurn, kRepairRings,
+                               progress);
+}
+
 void gaps(const Vec3& l, double& g12, double& g23) {
   g12 = std::min(g12, l[0] - l[1]);
   g23 = std::min(g23, l[1] - l[2]);
@@ -67,6 +94,9 @@ std::string SingularityFreeReport::summary() const {
     << " iterations; smallest eigenvalue gaps " << freeMinGap12 << ", " << freeMinGap23
     << " inside (" << heldMinGap12 << ", " << heldMinGap23 << " held)";
   if (nonBallSteps > 0) s << "; " << nonBallSteps << " tets not in a ball order";
+  if (roughEdges > 0)
+    s << "; non-repeating eigenvector smoothed at " << repairedDirections << " vertices around "
+      << roughEdges << " edges where it turned by more than 30°";
   return s.str();
 }
 
@@ -130,10 +160,17 @@ TensorField singularityFreeField(const TensorField& field, const RegionComplex& 
   for (int i = 0; i < count; ++i) hasTrace = hasTrace || (fixed[i] && trace[i] != 0);
   progress.throwIfCancelled();
 
+  const DirectionRepair repaired =
+      repairDirections(mesh, region, n.directions, fixed, eig, type, progress);
+  const std::vector<Vec3>& directions = repaired.directions;
+  r.roughEdges = repaired.roughEdges;
+  r.repairedDirections = repaired.solvedVertices;
+  progress.throwIfCancelled();
+
   progress.report(0.2, "reference field and jumps");
   const int seed = centralVertex(mesh, region);
   const ReferenceField ref =
-      referenceField(mesh, region, n.directions, seed, eig[seed].vectors.col(1));
+      referenceField(mesh, region, directions, seed, eig[seed].vectors.col(1));
   r.nonBallSteps = ref.nonBallSteps;
   r.maxHolonomyDefect = ref.maxHolonomyDefect;
   progress.throwIfCancelled();
@@ -144,7 +181,7 @@ TensorField singularityFreeField(const TensorField& field, const RegionComplex& 
   std::vector<double> raw(count, 0.0);
   forEach(count, [&](int i) {
     if (fixed[i]) {
-      raw[i] = signedAngle(ref.reference[i], eig[i].vectors.col(1), n.directions[i]);
+      raw[i] = signedAngle(ref.reference[i], eig[i].vectors.col(1), directions[i]);
     }
   });
   const std::vector<double> theta =
@@ -168,7 +205,7 @@ TensorField singularityFreeField(const TensorField& field, const RegionComplex& 
   std::vector<Tensor> out = field.values();
   forEach(count, [&](int i) {
     if (fixed[i]) return;
-    const Vec3& nd = n.directions[i];
+    const Vec3& nd = directions[i];
     const Vec3& u = ref.reference[i];
     const double th = values[i * width];
     const Vec3 medium = std::cos(th) * u + std::sin(th) * nd.cross(u);

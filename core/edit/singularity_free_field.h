@@ -4,8 +4,13 @@
 // outside M and on M's held vertices.
 //
 // In M the non-repeating eigenvector N (major for Linear, minor for Planar targets) is a vector
-// field (core/edit/vectorise_eigenvector.h) and stays as it is; a degenerate point of the new
-// field could only be a singularity of the medium eigenvector. So the medium eigenvector is
+// field (core/edit/vectorise_eigenvector.h) and stays as it is, except where it turns by more
+// than 30° across an edge next to a vertex where its eigenvalue nearly repeats (a
+// near-degeneracy of the other type that the mesh does not resolve):
+// there the free vertices take its harmonic extension (core/edit/smooth_directions.h), since
+// a field keeping such an N, with the large gaps made below, repeats an eigenvalue on the faces
+// in between. A degenerate point of the new field could then only be a singularity of the
+// medium eigenvector. So the medium eigenvector is
 // written as an angle θ from a reference field U ⊥ N (core/edit/reference_field.h: U by
 // parallel transport on the Gauss sphere over a ball order of the tets, and the jumps of the
 // edges), θ is fixed on the held vertices (Equation 5) and solved inside with the jump-aware
@@ -47,6 +52,10 @@ struct SingularityFreeReport {
   std::size_t heldVertices = 0;  ///< held (given or forced by a tet outside M)
   std::size_t freeVertices = 0;  ///< solved
   int nonBallSteps = 0;          ///< tets the reference propagation added without a ball order
+  /// Region edges across which the given N turned by more than 30° next to a vertex where it
+  /// is ill-defined (its eigenvalue gap under a tenth of the deviator's spread), and the free
+  /// vertices around them given N's harmonic extension (core/edit/smooth_directions.h).
+  int roughEdges = 0, repairedDirections = 0;
   double maxHolonomyDefect = 0;  ///< see ReferenceField
   int iterations = 0;
   double relativeResidual = 0;

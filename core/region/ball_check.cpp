@@ -30,17 +30,31 @@ std::uint64_t edgeKey(int a, int b) {
   return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b);
 }
 
+/// Pieces of the tets connected through faces: a breadth-first flood from each tet not yet
+/// reached (`index` maps a mesh tet to its position in `tets`, −1 outside).
 int tetComponents(const TetMesh& mesh, const std::vector<int>& tets,
                   const std::vector<int>& index) {
-  UnionFind uf(tets.size());
+  std::vector<char> reached(tets.size(), 0);
+  std::vector<int> queue;
+  queue.reserve(tets.size());
+  int pieces = 0;
   for (std::size_t i = 0; i < tets.size(); ++i) {
-    for (int f : mesh.tetFaces()[tets[i]]) {
-      for (int other : mesh.faceTets()[f]) {
-        if (other >= 0 && index[other] >= 0) uf.join(int(i), index[other]);
+    if (reached[i] || index[tets[i]] != int(i)) continue;  // reached, or a repeat
+    ++pieces;
+    reached[i] = 1;
+    queue.assign(1, int(i));
+    for (std::size_t head = 0; head < queue.size(); ++head) {
+      const int t = tets[queue[head]];
+      for (int f : mesh.tetFaces()[t]) {
+        const auto& ft = mesh.faceTets()[f];
+        const int other = ft[0] == t ? ft[1] : ft[0];
+        if (other < 0) continue;
+        const int j = index[other];
+        if (j >= 0 && !reached[j]) reached[j] = 1, queue.push_back(j);
       }
     }
   }
-  return uf.roots();
+  return pieces;
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <queue>
 
 #include "core/error.h"
@@ -23,6 +24,82 @@ Vec3 centroid(const TetMesh& mesh, int t) {
 using Entry = std::pair<double, int>;
 using MinHeap = std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>>;
 
+/// The centroid distance of tetDistances(), computed on demand: the front is a label-correcting
+/// Dijkstra over face-adjacent tets (a tet takes the distance to its neighbour's source when
+/// that is shorter and within the bound), whose pops can pause and resume without changing
+/// their order, so the distances are those of the full run. A pop at key k > P only gives
+/// distances > P − margin (margin ≥ any face neighbours' centroid distance: half the longest
+/// edge), so once every key ≤ P is popped, a distance ≤ P − margin is final. Region growing
+/// asks only for the tets next to its set, so the front stays one layer ahead of it and the
+/// cost follows the grown set, not the bound.
+class DistanceFront {
+ public:
+  DistanceFront(const TetMesh& mesh, std::span<const int> sources, double bound)
+      : mesh_(mesh),
+        bound_(bound),
+        d_(mesh.tetCount(), kInf),
+        source_(mesh.tetCount(), -1),
+        centroids_(new Vec3[mesh.tetCount()]),
+        known_(mesh.tetCount(), 0) {
+    double longest = 0;
+    for (const auto& e : mesh.edges())
+      longest = std::max(longest, (mesh.positions()[e[0]] - mesh.positions()[e[1]]).norm());
+    margin_ = 0.5 * longest;
+    step_ = std::max(mesh.meanEdgeLength(), 1e-300);
+    for (int s : sources) {
+      if (d_[s] == 0) continue;
+      d_[s] = 0, source_[s] = s;
+      centroidOf(s);
+      heap_.emplace(0.0, s);
+    }
+  }
+
+  /// The final distance of tet t (infinity beyond the bound), advancing the front as needed.
+  double at(int t, const Progress& progress) {
+    while (!(d_[t] <= popped_ - margin_) && !heap_.empty())
+      advance(std::max(popped_, heap_.top().first) + step_, progress);
+    return d_[t];
+  }
+  void settleAll(const Progress& progress) { advance(kInf, progress); }
+  std::vector<double> release() { return std::move(d_); }
+
+ private:
+  const Vec3& centroidOf(int t) {
+    if (!known_[t]) centroids_[t] = centroid(mesh_, t), known_[t] = 1;
+    return centroids_[t];
+  }
+  /// Pops every key ≤ upTo.
+  void advance(double upTo, const Progress& progress) {
+    while (!heap_.empty() && heap_.top().first <= upTo) {
+      const auto [dt, t] = heap_.top();
+      heap_.pop();
+      if (dt > d_[t]) continue;
+      if (++steps_ % 8192 == 0) progress.throwIfCancelled();
+      const Vec3 origin = centroids_[source_[t]];
+      for (int f : mesh_.tetFaces()[t]) {
+        const auto& ft = mesh_.faceTets()[f];
+        const int n = ft[0] == t ? ft[1] : ft[0];
+        if (n < 0 || d_[n] == 0) continue;
+        const double dn = (centroidOf(n) - origin).norm();
+        if (dn <= bound_ && dn < d_[n]) {
+          d_[n] = dn, source_[n] = source_[t];
+          heap_.emplace(dn, n);
+        }
+      }
+    }
+    popped_ = heap_.empty() ? kInf : upTo;
+  }
+
+  const TetMesh& mesh_;
+  double bound_, margin_ = 0, step_ = 0, popped_ = -kInf;
+  std::vector<double> d_;
+  std::vector<int> source_;
+  std::unique_ptr<Vec3[]> centroids_;  ///< of the tets reached (the others never touched)
+  std::vector<unsigned char> known_;
+  MinHeap heap_;
+  std::size_t steps_ = 0;
+};
+
 /// Adds tets nearest first while they keep the set a ball: candidates are the face neighbours
 /// of the set; a candidate that fails the simple-tet test waits ("deferred") until a tet next
 /// to it joins. `key` gives a candidate's distance (infinite: never a candidate).
@@ -36,7 +113,8 @@ class Grower {
         forbidden_(forbidden),
         key_(std::move(key)),
         onAdd_(std::move(onAdd)),
-        state_(mesh_.tetCount(), None) {}
+        state_(mesh_.tetCount(), None),
+        deferredAt_(mesh_.vertexCount(), 0) {}
 
   void add(int t) {
     set_.add(t);
@@ -47,9 +125,13 @@ class Grower {
         queue(n);
       }
     }
-    for (int v : mesh_.tets()[t])
+    // A deferred tet's contact with the set changes only when a tet sharing one of its
+    // vertices joins: re-check those (deferredAt_ skips the vertices with none).
+    for (int v : mesh_.tets()[t]) {
+      if (deferredAt_[v] == 0) continue;
       for (int n : mesh_.vertexTets(v))
-        if (state_[n] == Deferred && !set_.contains(n)) queue(n);
+        if (state_[n] == Deferred && !forbidden_[n] && !set_.contains(n)) requeue(n);
+    }
   }
   void queueNeighboursOfSet(const std::vector<int>& members) {
     for (int t : members)
@@ -77,7 +159,7 @@ class Grower {
         add(t);
         ++added_;
       } else {
-        state_[t] = Deferred;
+        defer(t);
       }
     }
     return true;
@@ -100,6 +182,16 @@ class Grower {
     state_[n] = Queued;
     heap_.emplace(k, n);
   }
+  void defer(int n) {
+    state_[n] = Deferred;
+    for (int v : mesh_.tets()[n]) ++deferredAt_[v];
+  }
+  void requeue(int n) {
+    for (int v : mesh_.tets()[n]) --deferredAt_[v];
+    state_[n] = None;
+    queue(n);
+    if (state_[n] == None) defer(n);  // no finite key: stays deferred
+  }
 
   TetSet& set_;
   const TetMesh& mesh_;
@@ -107,6 +199,7 @@ class Grower {
   std::function<double(int)> key_;
   std::function<void(int)> onAdd_;
   std::vector<unsigned char> state_;
+  std::vector<int> deferredAt_;  ///< deferred non-forbidden tets around each vertex
   MinHeap heap_;
   std::size_t added_ = 0, forbiddenMet_ = 0;
   int blockingTet_ = -1;
@@ -146,33 +239,9 @@ std::string shrink(TetSet& set, const std::vector<unsigned char>& isSeed,
 
 std::vector<double> tetDistances(const TetMesh& mesh, std::span<const int> sources, double bound,
                                  const Progress& progress) {
-  std::vector<double> d(mesh.tetCount(), kInf);
-  std::vector<int> source(mesh.tetCount(), -1);
-  MinHeap heap;
-  for (int s : sources) {
-    if (d[s] == 0) continue;
-    d[s] = 0, source[s] = s;
-    heap.emplace(0.0, s);
-  }
-  std::size_t steps = 0;
-  while (!heap.empty()) {
-    const auto [dt, t] = heap.top();
-    heap.pop();
-    if (dt > d[t]) continue;
-    if (++steps % 8192 == 0) progress.throwIfCancelled();
-    const Vec3 origin = centroid(mesh, source[t]);
-    for (int f : mesh.tetFaces()[t]) {
-      for (int n : mesh.faceTets()[f]) {
-        if (n < 0 || n == t) continue;
-        const double dn = (centroid(mesh, n) - origin).norm();
-        if (dn <= bound && dn < d[n]) {
-          d[n] = dn, source[n] = source[t];
-          heap.emplace(dn, n);
-        }
-      }
-    }
-  }
-  return d;
+  DistanceFront front(mesh, sources, bound);
+  front.settleAll(progress);
+  return front.release();
 }
 
 BallRegion growBallRegion(const TetMesh& mesh, std::span<const int> seedSpan,
@@ -193,12 +262,13 @@ BallRegion growBallRegion(const TetMesh& mesh, std::span<const int> seedSpan,
   // Step 1: distances to the seeds within a generous bound; beyond it the key continues with
   // the distance to the seeds' centre, so growth can always go on.
   const double bound1 = std::max(options.distance, 8 * mesh.meanEdgeLength());
-  const std::vector<double> d1 = tetDistances(mesh, seeds, bound1, progress);
+  DistanceFront d1(mesh, seeds, bound1);
   Vec3 centre = Vec3::Zero();
   for (int s : seeds) centre += centroid(mesh, s);
   centre /= double(seeds.size());
   auto key1 = [&](int t) {
-    return d1[t] < kInf ? d1[t] : bound1 + (centroid(mesh, t) - centre).norm();
+    const double d = d1.at(t, progress);
+    return d < kInf ? d : bound1 + (centroid(mesh, t) - centre).norm();
   };
   TetSet set(mesh);
   std::size_t seedsIn = 0;

@@ -13,10 +13,8 @@ TetSet::TetSet(const TetMesh& mesh)
       in_(mesh.tetCount(), 0),
       vertexCount_(mesh.vertexCount(), 0),
       edgeCount_(mesh.edges().size(), 0),
-      edgeTets_(mesh.edges().size(), 0),
+      edgeTets_(mesh.edges().size(), -1),
       edgeOnSurface_(mesh.edges().size(), 0) {
-  for (const auto& edges : mesh.tetEdges())
-    for (int e : edges) ++edgeTets_[e];
   for (int f : mesh.boundaryFaces()) {
     const int t = mesh.faceTets()[f][0];
     for (int i = 0; i < 4; ++i) {
@@ -25,6 +23,27 @@ TetSet::TetSet(const TetMesh& mesh)
         if (kEdgeEnds[e][0] != i && kEdgeEnds[e][1] != i) edgeOnSurface_[mesh.tetEdges()[t][e]] = 1;
     }
   }
+}
+
+// Tets around an edge: those around both ends (sorted lists), counted on first use, so a
+// set costs in proportion to the tets it touches rather than to the mesh.
+int TetSet::tetsAround(int edge) const {
+  int& n = edgeTets_[edge];
+  if (n < 0) {
+    const auto& ends = mesh_.edges()[edge];
+    const auto a = mesh_.vertexTets(ends[0]), b = mesh_.vertexTets(ends[1]);
+    n = 0;
+    for (std::size_t i = 0, j = 0; i < a.size() && j < b.size();) {
+      if (a[i] < b[j]) {
+        ++i;
+      } else if (b[j] < a[i]) {
+        ++j;
+      } else {
+        ++n, ++i, ++j;
+      }
+    }
+  }
+  return n;
 }
 
 int TetSet::sharedFaces(int tet) const {
@@ -91,7 +110,7 @@ bool TetSet::complementContactIsDisk(int tet) const {
   }
   for (int e = 0; e < 6; ++e) {
     const int id = mesh_.tetEdges()[tet][e];
-    if (!edgeOnSurface_[id] && edgeTets_[id] == edgeCount_[id]) continue;
+    if (!edgeOnSurface_[id] && tetsAround(id) == edgeCount_[id]) continue;
     const int a = kEdgeEnds[e][0], b = kEdgeEnds[e][1];
     bool covered = false;
     for (int j = 0; j < 4; ++j) covered = covered || (j != a && j != b && faceOut[j]);

@@ -45,7 +45,8 @@ class TetSet {
   const TetMesh& mesh_;
   std::vector<unsigned char> in_;
   std::vector<int> vertexCount_, edgeCount_;
-  std::vector<int> edgeTets_;                 ///< tets around each edge
+  int tetsAround(int edge) const;
+  mutable std::vector<int> edgeTets_;         ///< tets around each edge, −1 until needed
   std::vector<unsigned char> edgeOnSurface_;  ///< edge of a domain-surface face
   std::size_t size_ = 0;
 };

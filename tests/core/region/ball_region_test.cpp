@@ -213,3 +213,37 @@ TEST(BallRegion, ALineAcrossTheBoxMakesARegionOnTheDomainSurfaceWithFreeSurfaceV
 
 }  // namespace
 }  // namespace tfd::core
+
+namespace tfd::core {
+namespace {
+
+/// Each forbidden tet met is counted once: the count in growOutStop is at most the number of
+/// distinct forbidden tets next to the region (a forbidden tet re-queued whenever a tet around
+/// one of its vertices joined used to be counted again each time).
+TEST(BallRegion, ForbiddenTetsLeftOutAreCountedOnce) {
+  const auto mesh = testing::jitteredBox(12, 0.15);
+  const auto seeds = tetsWhere(*mesh, [](const Vec3& c) { return c.norm() < 0.15; });
+  std::vector<unsigned char> forbidden(mesh->tetCount(), 0);
+  for (int t : tetsWhere(*mesh, [](const Vec3& c) { return c.x() > 0.3 && c.x() < 0.42; }))
+    forbidden[t] = 1;
+  const BallRegion r = growBallRegion(*mesh, seeds, forbidden, {0.7});
+  ASSERT_TRUE(r.complete) << r.growStop;
+  std::vector<unsigned char> in(mesh->tetCount(), 0);
+  for (int t : r.tets) in[t] = 1;
+  std::vector<unsigned char> next(mesh->tetCount(), 0);
+  int adjacent = 0;
+  for (int t : r.tets)
+    for (int f : mesh->tetFaces()[t])
+      for (int n : mesh->faceTets()[f])
+        if (n >= 0 && forbidden[n] && !next[n]) next[n] = 1, ++adjacent;
+  const std::string marker = " tets left out because they hold another curve";
+  const auto at = r.growOutStop.find(marker);
+  ASSERT_NE(at, std::string::npos) << r.growOutStop;
+  const auto begin = r.growOutStop.rfind("; ", at);
+  const int reported = std::stoi(r.growOutStop.substr(begin + 2, at - begin - 2));
+  EXPECT_GT(reported, 0);
+  EXPECT_LE(reported, adjacent) << r.growOutStop;
+}
+
+}  // namespace
+}  // namespace tfd::core
