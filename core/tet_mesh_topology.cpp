@@ -94,7 +94,7 @@ bool TetMesh::quickCheckAndVolumes() {
   return ok;
 }
 
-bool TetMesh::buildIncidence() {
+bool TetMesh::buildIncidence(const Progress& progress) {
   // Counting sort by vertex with atomic slots (any order), then each vertex's list sorted:
   // ascending tet ids whatever the interleaving.
   const std::size_t nv = positions_.size(), nt = tets_.size();
@@ -104,6 +104,7 @@ bool TetMesh::buildIncidence() {
       for (int v : tets_[t])
         std::atomic_ref<int>(vertexTetStart_[v + 1]).fetch_add(1, std::memory_order_relaxed);
   });
+  progress.throwIfCancelled();
   for (std::size_t v = 0; v < nv; ++v) {
     if (vertexTetStart_[v + 1] == 0) return false;  // a vertex no tet uses
     vertexTetStart_[v + 1] += vertexTetStart_[v];
@@ -121,16 +122,18 @@ bool TetMesh::buildIncidence() {
       std::sort(vertexTetIds_.begin() + vertexTetStart_[v],
                 vertexTetIds_.begin() + vertexTetStart_[v + 1]);
   });
+  progress.throwIfCancelled();
   return true;
 }
 
-bool TetMesh::buildEdgesAndFaces() {
+bool TetMesh::buildEdgesAndFaces(const Progress& progress) {
   const std::size_t nv = positions_.size(), nt = tets_.size();
   // Pass 1: how many distinct edges and faces have each vertex as their lowest; a face with
   // more than two tets makes the mesh non-manifold.
   std::vector<int> edgeStart(nv + 1, 0), faceStart(nv + 1, 0);
   std::atomic<bool> manifold = true;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nv, kVertexGrain), [&](const auto& r) {
+    if (progress.cancelled()) return;
     std::vector<EdgeRecord> edges;
     std::vector<FaceRecord> faces;
     for (std::size_t a = r.begin(); a != r.end(); ++a) {
@@ -146,6 +149,7 @@ bool TetMesh::buildEdgesAndFaces() {
       faceStart[a + 1] = faceCount;
     }
   });
+  progress.throwIfCancelled();
   if (!manifold) return false;
   for (std::size_t v = 0; v < nv; ++v) {
     edgeStart[v + 1] += edgeStart[v];
@@ -158,6 +162,7 @@ bool TetMesh::buildEdgesAndFaces() {
   tetEdges_.resize(nt);
   tetFaces_.resize(nt);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nv, kVertexGrain), [&](const auto& r) {
+    if (progress.cancelled()) return;
     std::vector<EdgeRecord> edges;
     std::vector<FaceRecord> faces;
     for (std::size_t a = r.begin(); a != r.end(); ++a) {

@@ -38,7 +38,8 @@
 
 namespace tfd::graph {
 
-inline constexpr std::uint32_t kDiskCacheVersion = 1;
+// 2: TetMesh values carry their topology ids (nodes/value_codecs.cpp).
+inline constexpr std::uint32_t kDiskCacheVersion = 2;
 
 class DiskCache {
  public:
