@@ -57,7 +57,7 @@ void encodeField(const core::TensorField& field, ByteWriter& w) {
 
 std::shared_ptr<const core::TensorField> decodeField(ByteReader& r, DecodeMemo& memo) {
   const std::string_view meshBytes = r.bytes(r.u64(), "a mesh");
-  auto mesh = memo.shared<core::TetMesh>("TetMesh", graph::fnv1a64(meshBytes), [&] {
+  auto mesh = memo.shared<core::TetMesh>("TetMesh", graph::checksum64(meshBytes), [&] {
     ByteReader m(meshBytes);
     std::shared_ptr<const core::TetMesh> out = decodeMesh(m, memo);
     if (!m.atEnd()) throw graph::GraphError("trailing bytes after a mesh");
