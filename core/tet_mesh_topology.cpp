@@ -24,6 +24,8 @@ using tet_local::kEdge;
 using tet_local::kFace;
 
 constexpr std::size_t kVertexGrain = 2048;
+/// Tet blocks of the incidence build (fixed, independent of the thread count).
+constexpr std::size_t kIncidenceBlocks = 8;
 
 /// Local edge index (into kEdge) of the local vertex pair (i, j), i != j.
 constexpr int edgeIndex(int i, int j) {
@@ -95,32 +97,38 @@ bool TetMesh::quickCheckAndVolumes() {
 }
 
 bool TetMesh::buildIncidence(const Progress& progress) {
-  // Counting sort by vertex with atomic slots (any order), then each vertex's list sorted:
-  // ascending tet ids whatever the interleaving.
+  // A counting sort in a fixed number of tet blocks (not one per thread, so the result does
+  // not depend on the threads): each block counts its uses of every vertex, offsets run
+  // vertex by vertex through the blocks in order, and each block writes its tets in order, so
+  // every vertex's list comes out ascending with no atomics and no sort.
   const std::size_t nv = positions_.size(), nt = tets_.size();
-  vertexTetStart_.assign(nv + 1, 0);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nt, 8192), [&](const auto& r) {
-    for (std::size_t t = r.begin(); t != r.end(); ++t)
-      for (int v : tets_[t])
-        std::atomic_ref<int>(vertexTetStart_[v + 1]).fetch_add(1, std::memory_order_relaxed);
+  const std::size_t blockSize = (nt + kIncidenceBlocks - 1) / kIncidenceBlocks;
+  std::vector<int> slots(kIncidenceBlocks * nv, 0);  // block b's count, then offset, of v
+  tbb::parallel_for(std::size_t(0), kIncidenceBlocks, [&](std::size_t b) {
+    if (progress.cancelled()) return;
+    int* mine = slots.data() + b * nv;
+    for (std::size_t t = b * blockSize; t < std::min(nt, (b + 1) * blockSize); ++t)
+      for (int v : tets_[t]) ++mine[v];
   });
   progress.throwIfCancelled();
+  vertexTetStart_.resize(nv + 1);
+  int running = 0;
   for (std::size_t v = 0; v < nv; ++v) {
-    if (vertexTetStart_[v + 1] == 0) return false;  // a vertex no tet uses
-    vertexTetStart_[v + 1] += vertexTetStart_[v];
+    vertexTetStart_[v] = running;
+    for (std::size_t b = 0; b < kIncidenceBlocks; ++b) {
+      const int count = slots[b * nv + v];
+      slots[b * nv + v] = running;
+      running += count;
+    }
+    if (running == vertexTetStart_[v]) return false;  // a vertex no tet uses
   }
-  vertexTetIds_.resize(vertexTetStart_.back());
-  std::vector<int> fill(vertexTetStart_.begin(), vertexTetStart_.end() - 1);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nt, 8192), [&](const auto& r) {
-    for (std::size_t t = r.begin(); t != r.end(); ++t)
-      for (int v : tets_[t])
-        vertexTetIds_[std::atomic_ref<int>(fill[v]).fetch_add(1, std::memory_order_relaxed)] =
-            static_cast<int>(t);
-  });
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nv, kVertexGrain), [&](const auto& r) {
-    for (std::size_t v = r.begin(); v != r.end(); ++v)
-      std::sort(vertexTetIds_.begin() + vertexTetStart_[v],
-                vertexTetIds_.begin() + vertexTetStart_[v + 1]);
+  vertexTetStart_[nv] = running;
+  vertexTetIds_.resize(std::size_t(running));
+  tbb::parallel_for(std::size_t(0), kIncidenceBlocks, [&](std::size_t b) {
+    if (progress.cancelled()) return;
+    int* next = slots.data() + b * nv;
+    for (std::size_t t = b * blockSize; t < std::min(nt, (b + 1) * blockSize); ++t)
+      for (int v : tets_[t]) vertexTetIds_[next[v]++] = static_cast<int>(t);
   });
   progress.throwIfCancelled();
   return true;
