@@ -7,6 +7,7 @@
 #include <tbb/global_control.h>
 
 #include <algorithm>
+#include <atomic>
 #include <map>
 #include <numeric>
 #include <random>
@@ -120,6 +121,16 @@ TEST(TetMeshTopology, OneAndTwoThreadsBuildTheSameMesh) {
     const auto x = a->vertexTets(int(v)), y = b->vertexTets(int(v));
     ASSERT_TRUE(std::equal(x.begin(), x.end(), y.begin(), y.end()));
   }
+}
+
+TEST(TetMeshTopology, ACancelledBuildThrowsCancelled) {
+  const auto box = shuffledBox(6, 2);
+  std::atomic<bool> cancel = true;
+  const Progress progress({}, &cancel);
+  EXPECT_THROW(TetMesh(box->positions(), box->tets(), progress), Cancelled);
+  cancel = false;
+  const TetMesh mesh(box->positions(), box->tets(), progress);
+  EXPECT_EQ(mesh.faces(), box->faces());
 }
 
 TEST(TetMeshTopology, InvalidMeshesThrowValidatesWords) {
