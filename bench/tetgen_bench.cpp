@@ -84,13 +84,18 @@ void BM_TetgenSphere(benchmark::State& state) {
 
 /// The TetMesh constructor alone (validation, incidence, edges, faces, boundary, volumes) on
 /// TetGen's 1M-tet sphere, 1 and 2 threads; the copy of the input arrays is not timed.
-void BM_TetMeshTopology(benchmark::State& state) {
+const std::shared_ptr<const tfd::core::TetMesh>& sphere1M() {
   static const auto sphere = [] {
     tfd::io::TetgenOptions options;
     options.targetTets = 1e6;
     return tfd::io::tetrahedralize(tfd::core::makePrimitiveForTets(tfd::core::PrimitiveSpec{}, 1e6),
                                    options);
   }();
+  return sphere;
+}
+
+void BM_TetMeshTopology(benchmark::State& state) {
+  const auto& sphere = sphere1M();
   tbb::global_control threads(tbb::global_control::max_allowed_parallelism,
                               static_cast<std::size_t>(state.range(0)));
   std::size_t faces = 0;
@@ -107,6 +112,31 @@ void BM_TetMeshTopology(benchmark::State& state) {
   state.counters["faces"] = double(faces);
 }
 
+/// The restoring constructor (stored topology ids, as the on-disk cook cache keeps them;
+/// core/tet_mesh_restore.cpp) on the same mesh, 1 and 2 threads; the copies are not timed.
+void BM_TetMeshRestore(benchmark::State& state) {
+  const auto& sphere = sphere1M();
+  tbb::global_control threads(tbb::global_control::max_allowed_parallelism,
+                              static_cast<std::size_t>(state.range(0)));
+  for (auto _ : state) {
+    state.PauseTiming();
+    auto positions = sphere->positions();
+    auto tets = sphere->tets();
+    tfd::core::TetMesh::StoredTopology stored{sphere->tetEdges(), sphere->tetFaces(),
+                                              sphere->faceTets()};
+    state.ResumeTiming();
+    const tfd::core::TetMesh mesh(std::move(positions), std::move(tets), std::move(stored));
+    benchmark::DoNotOptimize(&mesh);
+  }
+  state.counters["tets"] = double(sphere->tetCount());
+}
+
+BENCHMARK(BM_TetMeshRestore)
+    ->Arg(1)
+    ->Arg(2)
+    ->Iterations(5)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK(BM_TetMeshTopology)
     ->Arg(1)
     ->Arg(2)

@@ -144,11 +144,13 @@ std::vector<std::string> TetMesh::validate(const std::vector<Vec3>& positions,
   return problems.finish();
 }
 
-TetMesh::TetMesh(std::vector<Vec3> positions, std::vector<Tet> tets)
+TetMesh::TetMesh(std::vector<Vec3> positions, std::vector<Tet> tets, const Progress& progress)
     : positions_(std::move(positions)), tets_(std::move(tets)) {
   // The fast checks cover everything validate() reports; only a mesh that fails one pays for
   // validate() itself, which then words every problem.
-  if (!quickCheckAndVolumes() || !buildIncidence() || !buildEdgesAndFaces()) throwInvalid();
+  if (!quickCheckAndVolumes() || !buildIncidence(progress) || !buildEdgesAndFaces(progress))
+    throwInvalid();
+  progress.throwIfCancelled();
   buildSummaries();
   buildBoundary();
 }

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/progress.h"
 #include "core/tensor.h"
 
 namespace tfd::core {
@@ -29,8 +30,24 @@ class TetMesh {
   using Edge = std::array<int, 2>;
 
   /// Throws core::Error listing the problems found by validate() (at most a handful, with
-  /// counts), e.g. "tet 12 is inverted (volume -0.003)".
-  TetMesh(std::vector<Vec3> positions, std::vector<Tet> tets);
+  /// counts), e.g. "tet 12 is inverted (volume -0.003)". Throws core::Cancelled when
+  /// `progress` is cancelled while the topology is built (checked inside every pass).
+  TetMesh(std::vector<Vec3> positions, std::vector<Tet> tets,
+          const Progress& progress = Progress());
+
+  /// The topology ids the on-disk cook cache stores with a mesh: tetEdges(), tetFaces() and
+  /// faceTets() of the mesh built from the same positions and tets.
+  struct StoredTopology {
+    std::vector<std::array<int, 6>> tetEdges;
+    std::vector<std::array<int, 4>> tetFaces;
+    std::vector<std::array<int, 2>> faceTets;
+  };
+  /// Restores a mesh without sorting anything again: edges and faces are read off the stored
+  /// ids and everything is verified (ids in range and all in use, every tet's edges and faces
+  /// consistent, edges and faces strictly ascending, faceTets exactly the tets naming each
+  /// face), which proves the result identical to TetMesh(positions, tets). Throws core::Error
+  /// when the mesh is invalid or the ids do not match its tets (core/tet_mesh_restore.cpp).
+  TetMesh(std::vector<Vec3> positions, std::vector<Tet> tets, StoredTopology stored);
   ~TetMesh();
   TetMesh(const TetMesh&) = delete;
   TetMesh& operator=(const TetMesh&) = delete;
@@ -89,8 +106,9 @@ class TetMesh {
   // Construction steps (core/tet_mesh_topology.cpp). The checks return false at the first
   // problem; throwInvalid() then lists every problem with validate().
   bool quickCheckAndVolumes();
-  bool buildIncidence();
-  bool buildEdgesAndFaces();
+  bool buildIncidence(const Progress& progress);
+  bool buildEdgesAndFaces(const Progress& progress);
+  bool restoreEdgesAndFaces();
   void buildSummaries();
   [[noreturn]] void throwInvalid() const;
   void buildBoundary();

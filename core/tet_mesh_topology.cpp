@@ -24,6 +24,8 @@ using tet_local::kEdge;
 using tet_local::kFace;
 
 constexpr std::size_t kVertexGrain = 2048;
+/// Tet blocks of the incidence build (fixed, independent of the thread count).
+constexpr std::size_t kIncidenceBlocks = 8;
 
 /// Local edge index (into kEdge) of the local vertex pair (i, j), i != j.
 constexpr int edgeIndex(int i, int j) {
@@ -94,43 +96,52 @@ bool TetMesh::quickCheckAndVolumes() {
   return ok;
 }
 
-bool TetMesh::buildIncidence() {
-  // Counting sort by vertex with atomic slots (any order), then each vertex's list sorted:
-  // ascending tet ids whatever the interleaving.
+bool TetMesh::buildIncidence(const Progress& progress) {
+  // A counting sort in a fixed number of tet blocks (not one per thread, so the result does
+  // not depend on the threads): each block counts its uses of every vertex, offsets run
+  // vertex by vertex through the blocks in order, and each block writes its tets in order, so
+  // every vertex's list comes out ascending with no atomics and no sort.
   const std::size_t nv = positions_.size(), nt = tets_.size();
-  vertexTetStart_.assign(nv + 1, 0);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nt, 8192), [&](const auto& r) {
-    for (std::size_t t = r.begin(); t != r.end(); ++t)
-      for (int v : tets_[t])
-        std::atomic_ref<int>(vertexTetStart_[v + 1]).fetch_add(1, std::memory_order_relaxed);
+  const std::size_t blockSize = (nt + kIncidenceBlocks - 1) / kIncidenceBlocks;
+  std::vector<int> slots(kIncidenceBlocks * nv, 0);  // block b's count, then offset, of v
+  tbb::parallel_for(std::size_t(0), kIncidenceBlocks, [&](std::size_t b) {
+    if (progress.cancelled()) return;
+    int* mine = slots.data() + b * nv;
+    for (std::size_t t = b * blockSize; t < std::min(nt, (b + 1) * blockSize); ++t)
+      for (int v : tets_[t]) ++mine[v];
   });
+  progress.throwIfCancelled();
+  vertexTetStart_.resize(nv + 1);
+  int running = 0;
   for (std::size_t v = 0; v < nv; ++v) {
-    if (vertexTetStart_[v + 1] == 0) return false;  // a vertex no tet uses
-    vertexTetStart_[v + 1] += vertexTetStart_[v];
+    vertexTetStart_[v] = running;
+    for (std::size_t b = 0; b < kIncidenceBlocks; ++b) {
+      const int count = slots[b * nv + v];
+      slots[b * nv + v] = running;
+      running += count;
+    }
+    if (running == vertexTetStart_[v]) return false;  // a vertex no tet uses
   }
-  vertexTetIds_.resize(vertexTetStart_.back());
-  std::vector<int> fill(vertexTetStart_.begin(), vertexTetStart_.end() - 1);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nt, 8192), [&](const auto& r) {
-    for (std::size_t t = r.begin(); t != r.end(); ++t)
-      for (int v : tets_[t])
-        vertexTetIds_[std::atomic_ref<int>(fill[v]).fetch_add(1, std::memory_order_relaxed)] =
-            static_cast<int>(t);
+  vertexTetStart_[nv] = running;
+  vertexTetIds_.resize(std::size_t(running));
+  tbb::parallel_for(std::size_t(0), kIncidenceBlocks, [&](std::size_t b) {
+    if (progress.cancelled()) return;
+    int* next = slots.data() + b * nv;
+    for (std::size_t t = b * blockSize; t < std::min(nt, (b + 1) * blockSize); ++t)
+      for (int v : tets_[t]) vertexTetIds_[next[v]++] = static_cast<int>(t);
   });
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nv, kVertexGrain), [&](const auto& r) {
-    for (std::size_t v = r.begin(); v != r.end(); ++v)
-      std::sort(vertexTetIds_.begin() + vertexTetStart_[v],
-                vertexTetIds_.begin() + vertexTetStart_[v + 1]);
-  });
+  progress.throwIfCancelled();
   return true;
 }
 
-bool TetMesh::buildEdgesAndFaces() {
+bool TetMesh::buildEdgesAndFaces(const Progress& progress) {
   const std::size_t nv = positions_.size(), nt = tets_.size();
   // Pass 1: how many distinct edges and faces have each vertex as their lowest; a face with
   // more than two tets makes the mesh non-manifold.
   std::vector<int> edgeStart(nv + 1, 0), faceStart(nv + 1, 0);
   std::atomic<bool> manifold = true;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nv, kVertexGrain), [&](const auto& r) {
+    if (progress.cancelled()) return;
     std::vector<EdgeRecord> edges;
     std::vector<FaceRecord> faces;
     for (std::size_t a = r.begin(); a != r.end(); ++a) {
@@ -146,6 +157,7 @@ bool TetMesh::buildEdgesAndFaces() {
       faceStart[a + 1] = faceCount;
     }
   });
+  progress.throwIfCancelled();
   if (!manifold) return false;
   for (std::size_t v = 0; v < nv; ++v) {
     edgeStart[v + 1] += edgeStart[v];
@@ -158,6 +170,7 @@ bool TetMesh::buildEdgesAndFaces() {
   tetEdges_.resize(nt);
   tetFaces_.resize(nt);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nv, kVertexGrain), [&](const auto& r) {
+    if (progress.cancelled()) return;
     std::vector<EdgeRecord> edges;
     std::vector<FaceRecord> faces;
     for (std::size_t a = r.begin(); a != r.end(); ++a) {

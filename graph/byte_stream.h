@@ -17,8 +17,14 @@ namespace tfd::graph {
 static_assert(std::endian::native == std::endian::little,
               "the cook cache stores raw little-endian numbers");
 
-/// FNV-1a, 64 bit, of a byte range (the cache's payload checksum).
+/// FNV-1a, 64 bit, of a byte range (one byte per step: slow on large ranges).
 std::uint64_t fnv1a64(std::string_view bytes);
+
+/// The cook cache's checksum of a byte range: 64-bit words in four independent lanes, each
+/// step (h ^ word) * FNV prime then h ^= h >> 29 (every step a bijection of the lane, so any
+/// change confined to one word always changes the result), the tail bytes FNV-1a, lanes and
+/// length mixed at the end. About 20 times faster than fnv1a64 (bench/RESULTS.md).
+std::uint64_t checksum64(std::string_view bytes);
 
 class ByteWriter {
  public:

@@ -1,5 +1,7 @@
 #include "graph/disk_cache.h"
 
+#include <fcntl.h>
+#include <sys/mman.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -53,10 +55,38 @@ std::vector<NodeMessage> readMessages(ByteReader& r) {
   return out;
 }
 
+/// A read-only mapping of a whole entry file (writers rename a new file over the entry and
+/// never change one in place, so the mapped bytes stay valid until unmapped).
+class MappedFile {
+ public:
+  explicit MappedFile(const fs::path& path, std::size_t size) : size_(size) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0 || size == 0) {
+      if (fd >= 0) ::close(fd);
+      return;
+    }
+    void* p = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
+    ::close(fd);
+    if (p != MAP_FAILED) data_ = static_cast<const char*>(p);
+  }
+  ~MappedFile() {
+    if (data_) ::munmap(const_cast<char*>(data_), size_);
+  }
+  MappedFile(const MappedFile&) = delete;
+  MappedFile& operator=(const MappedFile&) = delete;
+  const char* data() const { return data_; }
+
+ private:
+  const char* data_ = nullptr;
+  std::size_t size_;
+};
+
 }  // namespace
 
 struct DiskCache::Raw {
-  std::string meta, payload;
+  std::string meta;
+  std::shared_ptr<MappedFile> file;  // when the payload was asked for
+  std::string_view payload;
 };
 
 DiskCache::DiskCache(fs::path dir, std::uint64_t budgetBytes, const ValueCodecs& codecs)
@@ -115,12 +145,12 @@ std::optional<DiskCache::Raw> DiskCache::readVerified(const Hash& key, bool with
   raw.meta.resize(h.metaSize);
   if (!in.read(raw.meta.data(), static_cast<std::streamsize>(h.metaSize)))
     return damaged("truncated");
-  if (fnv1a64(raw.meta) != h.metaSum) return damaged("checksum mismatch in its description");
+  if (checksum64(raw.meta) != h.metaSum) return damaged("checksum mismatch in its description");
   if (withPayload) {
-    raw.payload.resize(h.payloadSize);
-    if (!in.read(raw.payload.data(), static_cast<std::streamsize>(h.payloadSize)))
-      return damaged("truncated");
-    if (fnv1a64(raw.payload) != h.payloadSum) return damaged("checksum mismatch in its values");
+    raw.file = std::make_shared<MappedFile>(path, size);
+    if (!raw.file->data()) return damaged("cannot map it");
+    raw.payload = std::string_view(raw.file->data() + kHeaderBytes + h.metaSize, h.payloadSize);
+    if (checksum64(raw.payload) != h.payloadSum) return damaged("checksum mismatch in its values");
   }
   return raw;
 }
@@ -206,9 +236,9 @@ void DiskCache::store(const Hash& key, const NodeDecl& decl, const CacheEntry& e
   h.keyHi = key.hi;
   h.keyLo = key.lo;
   h.metaSize = meta.bytes().size();
-  h.metaSum = fnv1a64(meta.bytes());
+  h.metaSum = checksum64(meta.bytes());
   h.payloadSize = payload.bytes().size();
-  h.payloadSum = fnv1a64(payload.bytes());
+  h.payloadSum = checksum64(payload.bytes());
 
   static std::atomic<unsigned> counter{0};
   const fs::path target = entryPath(key);

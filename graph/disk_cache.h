@@ -10,14 +10,15 @@
 //        8     4  format version (kDiskCacheVersion)
 //       12     4  reserved, 0
 //       16    16  key (hi, lo)
-//       32     8  meta size M           40  8  meta checksum (FNV-1a 64 of the meta bytes)
-//       48     8  payload size P        56  8  payload checksum (FNV-1a 64 of the payload)
+//       32     8  meta size M           40  8  meta checksum (checksum64 of the meta bytes)
+//       48     8  payload size P        56  8  payload checksum (checksum64 of the payload)
 //       64     M  meta: node type, typeVersion, seconds, messages, written files (path,
 //                 size, mtime), output count and each output's value type name
 //     64+M     P  payload: per output, its size (u64) and its codec's bytes (value_codec.h)
 // The meta part is read and verified on its own (cheap: it says whether the entry stands for
 // the node and which files an exporter left); the payload only when a node that is cooked
-// needs the value. Any mismatch (magic, version, key, sizes, checksums, a decoder's error) is
+// needs the value, from a read-only mapping of the file (no copy of a large payload). Any
+// mismatch (magic, version, key, sizes, checksums, a decoder's error) is
 // a cache miss with a warning, never a wrong result: the node is cooked again.
 //
 // Writes go to a temporary file in DIR, renamed over the entry (atomic on one file system).
@@ -38,7 +39,9 @@
 
 namespace tfd::graph {
 
-inline constexpr std::uint32_t kDiskCacheVersion = 1;
+// 2: TetMesh values carry their topology ids (nodes/value_codecs.cpp); checksum64 instead of
+//    FNV-1a (byte_stream.h).
+inline constexpr std::uint32_t kDiskCacheVersion = 2;
 
 class DiskCache {
  public:

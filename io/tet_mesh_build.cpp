@@ -8,7 +8,8 @@ namespace tfd::io {
 
 std::shared_ptr<const core::TetMesh> buildTetMesh(std::vector<core::Vec3> positions,
                                                   std::vector<core::TetMesh::Tet> tets,
-                                                  const std::string& source) {
+                                                  const std::string& source,
+                                                  const core::Progress& progress) {
   const int n = int(positions.size());
   bool inRange = true;
   for (const auto& t : tets) {
@@ -43,7 +44,9 @@ std::shared_ptr<const core::TetMesh> buildTetMesh(std::vector<core::Vec3> positi
     }
   }
   try {
-    return std::make_shared<const core::TetMesh>(std::move(positions), std::move(tets));
+    return std::make_shared<const core::TetMesh>(std::move(positions), std::move(tets), progress);
+  } catch (const core::Cancelled&) {
+    throw;
   } catch (const core::Error& e) {
     throw core::Error(source + ": " + e.what());
   }

@@ -28,8 +28,10 @@ namespace tfd::io {
 /// - otherwise TetMesh validation runs, and its problems (e.g. "tet 12 is inverted") are
 ///   thrown as core::Error prefixed with `source`.
 /// Tet indices must be in range; out-of-range indices are reported, also prefixed.
+/// core::Cancelled (from `progress`, checked inside the topology build) passes through as is.
 std::shared_ptr<const core::TetMesh> buildTetMesh(std::vector<core::Vec3> positions,
                                                   std::vector<core::TetMesh::Tet> tets,
-                                                  const std::string& source);
+                                                  const std::string& source,
+                                                  const core::Progress& progress = {});
 
 }  // namespace tfd::io

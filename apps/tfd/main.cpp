@@ -4,11 +4,13 @@
 #include <iostream>
 
 #include "apps/tfd/cli.h"
+#include "apps/tfd/huge_pages.h"
 #include "graph/version.h"
 #include "nodes/register_all.h"
 
 int main(int argc, char** argv) {
   using namespace tfd;
+  cli::restartWithHugePages(argv);
   // A file-size limit (ulimit -f) must fail the write that hits it (EFBIG), which the writers
   // report naming the file, instead of killing the process and leaving a temporary behind.
   std::signal(SIGXFSZ, SIG_IGN);

@@ -177,7 +177,7 @@ std::shared_ptr<const core::TetMesh> tetrahedralize(const core::SurfaceMesh& inp
     for (int i = 0; i < 4; ++i) tets[t][i] = run.tets[4 * t + i];
   }
   run.tets = {};
-  auto mesh = buildTetMesh(std::move(positions), std::move(tets), "TetGen output");
+  auto mesh = buildTetMesh(std::move(positions), std::move(tets), "TetGen output", progress);
   progress.report(1.0);
   return mesh;
 }

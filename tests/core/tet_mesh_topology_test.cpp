@@ -1,10 +1,13 @@
 // TetMesh's parallel, per-vertex topology build against an independent reference (one global
 // sort of all face and edge records, the construction it replaced), on meshes numbered without
-// spatial coherence like TetGen's; 1 and 2 threads bitwise equal.
+// spatial coherence like TetGen's; 1 and 2 threads bitwise equal. The restoring constructor
+// (stored edge and face ids, core/tet_mesh_restore.cpp) gives the same mesh and refuses ids
+// that do not match the tets.
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
 #include <algorithm>
+#include <atomic>
 #include <map>
 #include <numeric>
 #include <random>
@@ -120,6 +123,16 @@ TEST(TetMeshTopology, OneAndTwoThreadsBuildTheSameMesh) {
   }
 }
 
+TEST(TetMeshTopology, ACancelledBuildThrowsCancelled) {
+  const auto box = shuffledBox(6, 2);
+  std::atomic<bool> cancel = true;
+  const Progress progress({}, &cancel);
+  EXPECT_THROW(TetMesh(box->positions(), box->tets(), progress), Cancelled);
+  cancel = false;
+  const TetMesh mesh(box->positions(), box->tets(), progress);
+  EXPECT_EQ(mesh.faces(), box->faces());
+}
+
 TEST(TetMeshTopology, InvalidMeshesThrowValidatesWords) {
   // Each problem the fast checks catch must produce validate()'s full report.
   std::vector<Vec3> p = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0, 0, -1}, {1, 1, 1}};
@@ -143,6 +156,111 @@ TEST(TetMeshTopology, InvalidMeshesThrowValidatesWords) {
   }
   p[5] = Vec3(0.5, 0.5, std::nan(""));
   EXPECT_THROW(TetMesh(p, {{0, 1, 2, 3}, {0, 2, 1, 4}, {1, 2, 3, 5}}), Error);
+}
+
+/// Every derived array of two meshes bitwise equal.
+void expectSameMesh(const TetMesh& a, const TetMesh& b) {
+  EXPECT_EQ(a.edges(), b.edges());
+  EXPECT_EQ(a.tetEdges(), b.tetEdges());
+  EXPECT_EQ(a.faces(), b.faces());
+  EXPECT_EQ(a.faceTets(), b.faceTets());
+  EXPECT_EQ(a.tetFaces(), b.tetFaces());
+  EXPECT_EQ(a.boundaryFaces(), b.boundaryFaces());
+  EXPECT_EQ(a.boundaryVertices(), b.boundaryVertices());
+  EXPECT_EQ(a.vertexNormals(), b.vertexNormals());
+  EXPECT_EQ(a.tetVolumes(), b.tetVolumes());
+  EXPECT_EQ(a.totalVolume(), b.totalVolume());
+  EXPECT_EQ(a.meanEdgeLength(), b.meanEdgeLength());
+  EXPECT_EQ(a.boundsMin(), b.boundsMin());
+  EXPECT_EQ(a.boundsMax(), b.boundsMax());
+  for (std::size_t v = 0; v < a.vertexCount(); ++v) {
+    const auto x = a.vertexTets(int(v)), y = b.vertexTets(int(v));
+    ASSERT_TRUE(std::equal(x.begin(), x.end(), y.begin(), y.end()));
+  }
+}
+
+TEST(TetMeshRestore, StoredIdsGiveTheBuiltMeshForAnyThreadCount) {
+  const auto built = shuffledBox(14, 7);
+  for (int threads : {1, 2}) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    const TetMesh restored(built->positions(), built->tets(),
+                           {built->tetEdges(), built->tetFaces(), built->faceTets()});
+    expectSameMesh(*built, restored);
+  }
+}
+
+TEST(TetMeshRestore, IdsThatDoNotMatchTheTetsThrow) {
+  const auto mesh = shuffledBox(4, 3);
+  const auto& tets = mesh->tets();
+  const TetMesh::StoredTopology good{mesh->tetEdges(), mesh->tetFaces(), mesh->faceTets()};
+  const int edgeCount = int(mesh->edges().size()), faceCount = int(mesh->faces().size());
+  using Stored = TetMesh::StoredTopology;
+  std::vector<std::pair<std::string, Stored>> cases;
+  auto add = [&](const std::string& what, auto&& damage) {
+    Stored s = good;
+    damage(s);
+    cases.push_back({what, std::move(s)});
+  };
+  add("two edge ids of a tet swapped",
+      [](Stored& s) { std::swap(s.tetEdges[5][0], s.tetEdges[5][3]); });
+  add("two face ids of a tet swapped",
+      [](Stored& s) { std::swap(s.tetFaces[9][1], s.tetFaces[9][2]); });
+  add("an edge id out of range", [&](Stored& s) { s.tetEdges[0][2] = edgeCount; });
+  add("a face id out of range", [&](Stored& s) { s.tetFaces[3][3] = 4 * int(tets.size()); });
+  add("a negative id", [](Stored& s) { s.tetEdges[1][1] = -1; });
+  add("the last edge unused", [&](Stored& s) {
+    for (auto& ids : s.tetEdges)
+      for (int& id : ids)
+        if (id == edgeCount - 1) id = 0;
+  });
+  add("one tet's face id changed",
+      [&](Stored& s) { s.tetFaces[2][0] = (s.tetFaces[2][0] + 1) % faceCount; });
+  add("a tet missing", [](Stored& s) {
+    s.tetEdges.pop_back();
+    s.tetFaces.pop_back();
+  });
+  // Consistent everywhere but not in lexicographic order: only the ascending check finds it.
+  add("edges renumbered consistently", [&](Stored& s) {
+    for (auto& ids : s.tetEdges)
+      for (int& id : ids) id = edgeCount - 1 - id;
+  });
+  add("faces renumbered consistently", [&](Stored& s) {
+    for (auto& ids : s.tetFaces)
+      for (int& id : ids) id = (id + 1) % faceCount;
+    std::rotate(s.faceTets.rbegin(), s.faceTets.rbegin() + 1, s.faceTets.rend());
+  });
+  // faceTets: a face's tets swapped, a boundary face given a second tet, an inner face's
+  // second tet dropped, a face list too short.
+  int inner = 0, boundary = 0;
+  while (good.faceTets[inner][1] < 0) ++inner;
+  while (good.faceTets[boundary][1] >= 0) ++boundary;
+  add("a face's tets in descending order",
+      [&](Stored& s) { std::swap(s.faceTets[inner][0], s.faceTets[inner][1]); });
+  add("a boundary face with a second tet", [&](Stored& s) {
+    s.faceTets[boundary][1] = std::min(s.faceTets[boundary][0] + 1, int(tets.size()) - 1);
+  });
+  add("an inner face's second tet dropped", [&](Stored& s) { s.faceTets[inner][1] = -1; });
+  add("a face list too short", [](Stored& s) { s.faceTets.pop_back(); });
+  for (auto& [what, stored] : cases) {
+    try {
+      TetMesh restored(mesh->positions(), tets, stored);
+      ADD_FAILURE() << "restored with " << what;
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("stored mesh topology does not match"),
+                std::string::npos)
+          << what << ": " << e.what();
+    }
+  }
+  // The undamaged ids restore; an invalid mesh still gets validate()'s words, whatever the ids.
+  EXPECT_NO_THROW(TetMesh(mesh->positions(), tets, good));
+  auto flipped = tets;
+  std::swap(flipped[0][0], flipped[0][1]);
+  try {
+    TetMesh bad(mesh->positions(), flipped, good);
+    ADD_FAILURE() << "an inverted tet was restored";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("inverted"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

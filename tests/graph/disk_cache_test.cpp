@@ -216,5 +216,28 @@ TEST(ByteStream, ReaderNeverReadsPastTheEnd) {
   EXPECT_EQ(fnv1a64("a"), 0xaf63dc4c8601ec8cull);  // published FNV-1a 64 test vector
 }
 
+TEST(ByteStream, ChecksumSeesEveryBitFlipAndTheLength) {
+  // 1000 bytes: 31 whole 32-byte blocks (four lanes) and an 8-byte tail.
+  std::string bytes(1000, '\0');
+  for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = char(i * 131 + 7);
+  const std::uint64_t sum = checksum64(bytes);
+  EXPECT_EQ(checksum64(std::string(bytes)), sum);
+  for (std::size_t bit = 0; bit < 8 * bytes.size(); ++bit) {
+    std::string flipped = bytes;
+    flipped[bit / 8] = char(flipped[bit / 8] ^ (1 << (bit % 8)));
+    ASSERT_NE(checksum64(flipped), sum) << "bit " << bit;
+  }
+  // Two words of one lane changed together, a zero byte appended, lanes swapped.
+  std::string two = bytes;
+  two[0] = char(two[0] ^ 1);
+  two[32] = char(two[32] ^ 1);
+  EXPECT_NE(checksum64(two), sum);
+  EXPECT_NE(checksum64(bytes + std::string(1, '\0')), sum);
+  std::string swapped = bytes;
+  std::swap_ranges(swapped.begin(), swapped.begin() + 8, swapped.begin() + 8);
+  EXPECT_NE(checksum64(swapped), sum);
+  EXPECT_NE(checksum64(""), checksum64(std::string(1, '\0')));
+}
+
 }  // namespace
 }  // namespace tfd::graph
