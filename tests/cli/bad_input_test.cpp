@@ -207,7 +207,10 @@ std::vector<std::size_t> memBytesValueOffsets(const std::string& vdb) {
   return out;
 }
 
-TEST_F(BadInput, InfoRefusesAVdbAnnouncingMoreMemoryThanTheBudget) {
+// A VDB whose grids announce a petabyte each: `tfd info` once read the trees (and so checked
+// the announcement against the budget); it now reads metadata only (io/volume/vdb_reader.h),
+// so the announcement costs nothing and the file is described, also with a small budget.
+TEST_F(BadInput, InfoOfAVdbAnnouncingMoreMemoryThanTheBudgetReadsNoTree) {
   const ordered_json g = exportGraph(smallBall(), "ExportVDB", {{"voxel_size", 0.2}});
   ASSERT_EQ(cook(g).exitCode, 0);
   std::string vdb = bytesOf(dir.path() / "field.vdb");
@@ -216,15 +219,12 @@ TEST_F(BadInput, InfoRefusesAVdbAnnouncingMoreMemoryThanTheBudget) {
   const std::int64_t huge = std::int64_t(1) << 50;  // 1 PB
   for (std::size_t at : offsets) std::memcpy(vdb.data() + at, &huge, sizeof huge);
   writeBytes(dir.path() / "damaged.vdb", vdb);
-  const CliRun r = runCli("info " + shellQuote((dir.path() / "damaged.vdb").string()));
-  EXPECT_EQ(r.exitCode, 2) << r.err;
-  EXPECT_TRUE(has(r.err, "damaged.vdb': grid '")) << r.err;
-  EXPECT_TRUE(has(r.err, "(as the file announces) needs about 1.0 PB, more than the memory"))
-      << r.err;
-  // The undamaged file is fine, also with a small budget.
-  const CliRun ok =
-      runCli("info --max-memory 64M " + shellQuote((dir.path() / "field.vdb").string()));
-  EXPECT_EQ(ok.exitCode, 0) << ok.err;
+  for (const char* name : {"damaged.vdb", "field.vdb"}) {
+    const CliRun r = runCli("info --max-memory 64M " + shellQuote((dir.path() / name).string()));
+    EXPECT_EQ(r.exitCode, 0) << name << ": " << r.err;
+    EXPECT_TRUE(has(r.out, "grid T.xx:")) << r.out;
+    EXPECT_TRUE(has(r.out, " active voxels in [")) << r.out;
+  }
 }
 
 /// `tfd info file` where a runaway allocation fails fast: under a 4 GB address-space limit,
