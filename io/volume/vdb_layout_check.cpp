@@ -82,6 +82,7 @@ VdbLayout checkVdbLayout(const std::filesystem::path& path) {
   LayoutReader r(path);
   VdbLayout layout;
   if (r.size() < 8 || r.value<std::int64_t>("the header") != kVdbMagic) return layout;
+  layout.magic = true;
   // OpenVDB reads a file of a newer version than its own with its own layout (after a warning),
   // so such a file is checked as one of the last known version; older layouts are OpenVDB's.
   layout.version = r.value<std::uint32_t>("the header");

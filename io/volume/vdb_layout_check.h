@@ -11,7 +11,8 @@
 namespace tfd::io {
 
 struct VdbLayout {
-  std::uint32_t version = 0;  ///< file format version (0: not an OpenVDB file)
+  bool magic = false;         ///< starts as an OpenVDB file does (otherwise OpenVDB says so)
+  std::uint32_t version = 0;  ///< file format version
   bool gridOffsets = false;   ///< grid descriptors say where each grid is (files, not streams)
   /// Everything before the trees was checked: a version from 222 on, with grid offsets.
   bool checked = false;

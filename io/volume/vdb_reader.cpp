@@ -156,7 +156,7 @@ void takeRecordedStatistics(const openvdb::GridBase& grid, VdbGridData& g) {
 /// OpenVDB reads the trees of a file without grid offsets when it opens it (File::open), and
 /// an older file's layout is not checked: neither is safe to give OpenVDB (see the header).
 void refuseUncheckedLayout(const std::filesystem::path& path, const VdbLayout& layout) {
-  if (layout.checked || layout.version == 0) return;  // checked, or OpenVDB says what it is
+  if (layout.checked || !layout.magic) return;  // checked, or OpenVDB says what it is
   const std::string start = "cannot read VDB file '" + path.string() + "': ";
   if (layout.version < 222)
     throw core::Error(start + "its format version " + std::to_string(layout.version) +

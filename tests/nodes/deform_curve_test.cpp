@@ -13,6 +13,7 @@
 #include "graph/node_registry.h"
 #include "nodes/register_all.h"
 #include "nodes/value_types.h"
+#include "tests/support/builtin_nodes.h"
 #include "tests/support/temp_dir.h"
 #include "tests/support/vtk_xml_reader.h"
 
@@ -21,26 +22,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const graph::NodeRegistry& registry() {
-  static const graph::NodeRegistry* r = [] {
-    auto* reg = new graph::NodeRegistry;
-    registerAll(*reg);
-    return reg;
-  }();
-  return *r;
-}
-
 graph::Graph example() {
   graph::Graph g = graph::loadGraphFile(
-      fs::path(TFD_SOURCE_DIR) / "examples" / "deform_curve.tfd.json", registry());
+      fs::path(TFD_SOURCE_DIR) / "examples" / "deform_curve.tfd.json", test::builtinNodes());
   g.setParam("ball", "target_tets", std::int64_t(15000));
   return g;
-}
-
-std::string allText(const graph::NodeReport& r) {
-  std::string s;
-  for (const auto& m : r.messages) s += m.text + "\n";
-  return s;
 }
 
 TEST(DeformCurveNode, TheExampleBendsItsCurveOntoTheTarget) {
@@ -49,7 +35,7 @@ TEST(DeformCurveNode, TheExampleBendsItsCurveOntoTheTarget) {
   options.outDir = dir.path();
   graph::Evaluator ev;
   const graph::CookResult r = ev.cook(example(), options);
-  ASSERT_TRUE(r.ok()) << allText(*r.report("deform"));
+  ASSERT_TRUE(r.ok()) << test::reportText(*r.report("deform"));
   const auto before = r.output<core::DegenerateCurves>("topology", "curves");
   const auto after = r.output<core::DegenerateCurves>("deform", "curves");
   ASSERT_EQ(before->size(), 1u) << before->summary();
@@ -60,7 +46,7 @@ TEST(DeformCurveNode, TheExampleBendsItsCurveOntoTheTarget) {
   const auto region = r.output<core::TetRegion>("deform", "region");
   const double h = region->mesh->meanEdgeLength();
   EXPECT_NEAR(farthest, 0.3, h);
-  const std::string info = allText(*r.report("deform"));
+  const std::string info = test::reportText(*r.report("deform"));
   for (const char* line : {"deformation of the linear curve", "region: ", "fold-overs: ",
                            "Hausdorff distance to the target: ", "tries: 1", "1 curves -> 1"})
     EXPECT_NE(info.find(line), std::string::npos) << line << "\n" << info;
@@ -94,7 +80,7 @@ TEST(DeformCurveNode, FailuresNameTheCheckOrTheParameter) {
     const graph::CookResult r = ev.cook(g, options);
     EXPECT_FALSE(r.ok());
     EXPECT_EQ(r.report("deform")->state, graph::NodeState::Failed);
-    const std::string error = allText(*r.report("deform"));
+    const std::string error = test::reportText(*r.report("deform"));
     EXPECT_NE(error.find(c.message), std::string::npos) << error;
     EXPECT_EQ(r.report("vtu")->state, graph::NodeState::UpstreamFailed);
     EXPECT_FALSE(fs::exists(dir.path() / "deform_curve.vtu"));

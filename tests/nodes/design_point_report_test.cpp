@@ -14,20 +14,12 @@
 #include "graph/node_registry.h"
 #include "nodes/register_all.h"
 #include "nodes/value_types.h"
+#include "tests/support/builtin_nodes.h"
 
 namespace tfd::nodes {
 namespace {
 
 namespace fs = std::filesystem;
-
-const graph::NodeRegistry& registry() {
-  static const graph::NodeRegistry& r = *[] {
-    auto* out = new graph::NodeRegistry;  // lives as long as the test program
-    registerAll(*out);
-    return out;
-  }();
-  return r;
-}
 
 const char* kPoints[] = {"linear_wedge", "planar_trisector", "linear_trisector", "planar_wedge"};
 
@@ -38,8 +30,8 @@ struct Cooked {
 };
 
 Cooked cookDefault(const char* support) {
-  graph::Graph g =
-      graph::loadGraphFile(fs::path(TFD_SOURCE_DIR) / "examples" / "default.tfd.json", registry());
+  graph::Graph g = graph::loadGraphFile(fs::path(TFD_SOURCE_DIR) / "examples" / "default.tfd.json",
+                                        test::builtinNodes());
   g.setParam("ball", "target_tets", std::int64_t(20000));
   for (const char* p : kPoints) g.setParam(p, "support", std::string(support));
   graph::CookOptions options;

@@ -11,21 +11,13 @@
 #include "io/mesh_file.h"
 #include "nodes/register_all.h"
 #include "nodes/value_types.h"
+#include "tests/support/builtin_nodes.h"
 #include "tests/support/temp_dir.h"
 
 namespace tfd::nodes {
 namespace {
 
 namespace fs = std::filesystem;
-
-const graph::NodeRegistry& registry() {
-  static const graph::NodeRegistry& r = *[] {
-    auto* out = new graph::NodeRegistry;
-    registerAll(*out);
-    return out;
-  }();
-  return r;
-}
 
 std::string graphText(const std::string& exporters, const std::string& links) {
   return R"({"format": "tfd-graph", "formatVersion": 2, "nodes": {
@@ -49,8 +41,8 @@ std::string errorsOf(const graph::NodeReport* r) {
 }
 
 TEST(ElementNodes, ExportMeshIsASideEffectNodeAndElementSynthesisIsNot) {
-  EXPECT_TRUE(registry().get("ExportMesh").decl().hasSideEffects());
-  EXPECT_FALSE(registry().get("ElementSynthesis").decl().hasSideEffects());
+  EXPECT_TRUE(test::builtinNodes().get("ExportMesh").decl().hasSideEffects());
+  EXPECT_FALSE(test::builtinNodes().get("ElementSynthesis").decl().hasSideEffects());
 }
 
 TEST(ElementNodes, SticksAndLeavesExportedAsMeshAndPoints) {
@@ -65,7 +57,8 @@ TEST(ElementNodes, SticksAndLeavesExportedAsMeshAndPoints) {
   graph::CookOptions options;
   options.outDir = dir.path();
   graph::Evaluator ev;
-  const graph::CookResult r = ev.cook(graph::parseGraph(text, registry(), "elements"), options);
+  const graph::CookResult r =
+      ev.cook(graph::parseGraph(text, test::builtinNodes(), "elements"), options);
   ASSERT_TRUE(r.ok()) << errorsOf(r.report("obj")) << errorsOf(r.report("elements"));
   const auto mesh = r.output<core::SurfaceMesh>("elements", "mesh");
   const auto points = r.output<core::InstancePoints>("elements", "points");
@@ -102,7 +95,8 @@ TEST(ElementNodes, ExportMeshRefusesWhatItCannotWrite) {
   graph::CookOptions options;
   options.outDir = dir.path();
   graph::Evaluator ev;
-  const graph::CookResult r = ev.cook(graph::parseGraph(text, registry(), "bad"), options);
+  const graph::CookResult r =
+      ev.cook(graph::parseGraph(text, test::builtinNodes(), "bad"), options);
   const std::string stl = errorsOf(r.report("stl"));
   EXPECT_NE(stl.find("parameter 'path'"), std::string::npos) << stl;
   EXPECT_NE(stl.find(".obj or .ply"), std::string::npos) << stl;

@@ -16,6 +16,7 @@
 #include "io/volume/exr_reader.h"
 #include "io/volume/vdb_reader.h"
 #include "nodes/register_all.h"
+#include "tests/support/builtin_nodes.h"
 #include "tests/support/temp_dir.h"
 #include "tests/support/vtk_xml_reader.h"
 
@@ -23,15 +24,6 @@ namespace tfd::nodes {
 namespace {
 
 namespace fs = std::filesystem;
-
-const graph::NodeRegistry& registry() {
-  static const graph::NodeRegistry& r = *[] {
-    auto* out = new graph::NodeRegistry;  // lives as long as the test program
-    registerAll(*out);
-    return out;
-  }();
-  return r;
-}
 
 graph::CookResult cook(graph::Graph& g, const fs::path& outDir) {
   graph::CookOptions options;
@@ -48,8 +40,8 @@ std::map<std::string, std::string> gridClasses(const fs::path& file) {
 
 TEST(ExportViews, FixtureWritesDensityPreviewGlyphsAndScene) {
   test::TempDir dir("export-views");
-  graph::Graph g =
-      graph::loadGraphFile(TFD_TEST_DATA_DIR "/graphs/nodes/exporters_v3.tfd.json", registry());
+  graph::Graph g = graph::loadGraphFile(TFD_TEST_DATA_DIR "/graphs/nodes/exporters_v3.tfd.json",
+                                        test::builtinNodes());
   const graph::CookResult r = cook(g, dir.path());
   ASSERT_TRUE(r.ok());
 
@@ -122,7 +114,7 @@ TEST(ExportViews, DensityAndPreviewOtherThanNoneOrDefaultAreErrorsWithAVolume) {
     "exr": {"type": "ExportEXR", "typeVersion": 2, "params": {"path": "n.%d.exr", "preview": "anisotropy"}}},
     "links": [{"from": "box.mesh", "to": "f.mesh"}, {"from": "f.field", "to": "noise.field"},
               {"from": "noise.volume", "to": "vdb.volume"}, {"from": "noise.volume", "to": "exr.volume"}]})";
-  graph::Graph g = graph::parseGraph(text, registry(), "test graph");
+  graph::Graph g = graph::parseGraph(text, test::builtinNodes(), "test graph");
   const graph::CookResult r = cook(g, dir.path());
   for (const char* node : {"vdb", "exr"}) {
     const graph::NodeReport* rep = r.report(node);

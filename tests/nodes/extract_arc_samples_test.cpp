@@ -12,20 +12,12 @@
 #include "graph/node_registry.h"
 #include "nodes/register_all.h"
 #include "nodes/value_types.h"
+#include "tests/support/builtin_nodes.h"
 
 namespace tfd::nodes {
 namespace {
 
 namespace fs = std::filesystem;
-
-const graph::NodeRegistry& registry() {
-  static const graph::NodeRegistry& r = *[] {
-    auto* out = new graph::NodeRegistry;  // lives as long as the test program
-    registerAll(*out);
-    return out;
-  }();
-  return r;
-}
 
 /// The points of a curve on mesh faces, edges and vertices (not the ones inside tets).
 std::vector<core::Vec3> skeleton(const core::DegenerateCurve& c) {
@@ -36,8 +28,8 @@ std::vector<core::Vec3> skeleton(const core::DegenerateCurve& c) {
 }
 
 TEST(ExtractArcSamples, ArcSamplesNeverChangeWhichCurvesExistOrAreDropped) {
-  graph::Graph g =
-      graph::loadGraphFile(fs::path(TFD_SOURCE_DIR) / "examples" / "default.tfd.json", registry());
+  graph::Graph g = graph::loadGraphFile(fs::path(TFD_SOURCE_DIR) / "examples" / "default.tfd.json",
+                                        test::builtinNodes());
   g.setParam("ball", "target_tets", std::int64_t(20000));
   graph::CookOptions options;
   options.targets = {"topology"};

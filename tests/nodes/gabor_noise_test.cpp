@@ -14,6 +14,7 @@
 #include "io/volume/vdb_reader.h"
 #include "nodes/register_all.h"
 #include "nodes/value_types.h"
+#include "tests/support/builtin_nodes.h"
 #include "tests/support/temp_dir.h"
 
 namespace tfd::nodes {
@@ -21,17 +22,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const graph::NodeRegistry& registry() {
-  static const graph::NodeRegistry& r = *[] {
-    auto* out = new graph::NodeRegistry;  // lives as long as the test program
-    registerAll(*out);
-    return out;
-  }();
-  return r;
-}
-
 graph::CookResult cookText(const std::string& text, const fs::path& outDir) {
-  graph::Graph g = graph::parseGraph(text, registry(), "test graph");
+  graph::Graph g = graph::parseGraph(text, test::builtinNodes(), "test graph");
   graph::CookOptions options;
   options.outDir = outDir;
   options.baseDir = outDir;

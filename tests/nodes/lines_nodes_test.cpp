@@ -8,20 +8,12 @@
 #include "graph/node_registry.h"
 #include "nodes/register_all.h"
 #include "nodes/value_types.h"
+#include "tests/support/builtin_nodes.h"
 #include "tests/support/temp_dir.h"
 #include "tests/support/vtk_xml_reader.h"
 
 namespace tfd::nodes {
 namespace {
-
-const graph::NodeRegistry& registry() {
-  static const graph::NodeRegistry& r = *[] {
-    auto* out = new graph::NodeRegistry;  // lives as long as the test program
-    registerAll(*out);
-    return out;
-  }();
-  return r;
-}
 
 std::string graphText(const std::string& separation) {
   return R"({"format": "tfd-graph", "formatVersion": 2, "nodes": {
@@ -49,7 +41,7 @@ TEST(LinesNodes, HyperstreamlinesToTubesAndFiles) {
   options.outDir = dir.path();
   graph::Evaluator evaluator;
   const graph::CookResult r =
-      evaluator.cook(graph::parseGraph(graphText("0.08"), registry(), "lines"), options);
+      evaluator.cook(graph::parseGraph(graphText("0.08"), test::builtinNodes(), "lines"), options);
   ASSERT_TRUE(r.ok());
   const auto lines = r.output<core::Polylines>("lines", "lines");
   ASSERT_GT(lines->lines.size(), 10u) << lines->summary();
@@ -72,8 +64,8 @@ TEST(LinesNodes, ASeparationTooSmallForTheMeshFailsTheNodeNamingIt) {
   graph::CookOptions options;
   options.outDir = dir.path();
   graph::Evaluator evaluator;
-  const graph::CookResult r =
-      evaluator.cook(graph::parseGraph(graphText("0.0001"), registry(), "lines"), options);
+  const graph::CookResult r = evaluator.cook(
+      graph::parseGraph(graphText("0.0001"), test::builtinNodes(), "lines"), options);
   ASSERT_FALSE(r.ok());
   const graph::NodeReport* rep = r.report("lines");
   ASSERT_TRUE(rep);

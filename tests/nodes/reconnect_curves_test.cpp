@@ -13,6 +13,7 @@
 #include "graph/node_registry.h"
 #include "nodes/register_all.h"
 #include "nodes/value_types.h"
+#include "tests/support/builtin_nodes.h"
 #include "tests/support/temp_dir.h"
 #include "tests/support/vtk_xml_reader.h"
 
@@ -21,26 +22,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const graph::NodeRegistry& registry() {
-  static const graph::NodeRegistry* r = [] {
-    auto* reg = new graph::NodeRegistry;
-    registerAll(*reg);
-    return reg;
-  }();
-  return *r;
-}
-
 graph::Graph example() {
   graph::Graph g = graph::loadGraphFile(
-      fs::path(TFD_SOURCE_DIR) / "examples" / "reconnect_loop.tfd.json", registry());
+      fs::path(TFD_SOURCE_DIR) / "examples" / "reconnect_loop.tfd.json", test::builtinNodes());
   g.setParam("ball", "target_tets", std::int64_t(15000));
   return g;
-}
-
-std::string allText(const graph::NodeReport& r) {
-  std::string s;
-  for (const auto& m : r.messages) s += m.text + "\n";
-  return s;
 }
 
 TEST(ReconnectCurvesNode, TheExampleBreaksItsLoopInTwo) {
@@ -49,7 +35,7 @@ TEST(ReconnectCurvesNode, TheExampleBreaksItsLoopInTwo) {
   options.outDir = dir.path();
   graph::Evaluator ev;
   const graph::CookResult r = ev.cook(example(), options);
-  ASSERT_TRUE(r.ok()) << allText(*r.report("reconnect"));
+  ASSERT_TRUE(r.ok()) << test::reportText(*r.report("reconnect"));
   const auto before = r.output<core::DegenerateCurves>("topology", "curves");
   const auto after = r.output<core::DegenerateCurves>("reconnect", "curves");
   ASSERT_EQ(before->size(), 1u) << before->summary();
@@ -64,7 +50,7 @@ TEST(ReconnectCurvesNode, TheExampleBreaksItsLoopInTwo) {
   }
   EXPECT_GT(std::max(mean[0], mean[1]), 0.2);
   EXPECT_LT(std::min(mean[0], mean[1]), -0.2);
-  const std::string info = allText(*r.report("reconnect"));
+  const std::string info = test::reportText(*r.report("reconnect"));
   for (const char* line : {"reconnection of the linear loop",
                            "end A (segment 1): ", "pairing (Lemma 6.1, Theorem 6.2): A joins ",
                            "sheet (graph shortest", "new curves: ", "tries: 1", "1 curves -> 2"})
@@ -97,7 +83,7 @@ TEST(ReconnectCurvesNode, FailuresNameTheReasonOrTheParameter) {
     const graph::CookResult r = ev.cook(g, options);
     EXPECT_FALSE(r.ok());
     EXPECT_EQ(r.report("reconnect")->state, graph::NodeState::Failed);
-    const std::string error = allText(*r.report("reconnect"));
+    const std::string error = test::reportText(*r.report("reconnect"));
     EXPECT_NE(error.find(c.message), std::string::npos) << error;
     EXPECT_EQ(r.report("vtu")->state, graph::NodeState::UpstreamFailed);
     EXPECT_FALSE(fs::exists(dir.path() / "reconnect_loop.vtu"));

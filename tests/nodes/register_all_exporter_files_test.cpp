@@ -14,21 +14,13 @@
 #include "graph/graph_file.h"
 #include "graph/node_registry.h"
 #include "nodes/register_all.h"
+#include "tests/support/builtin_nodes.h"
 #include "tests/support/temp_dir.h"
 
 namespace tfd::nodes {
 namespace {
 
 namespace fs = std::filesystem;
-
-const graph::NodeRegistry& registry() {
-  static const graph::NodeRegistry& r = *[] {
-    auto* out = new graph::NodeRegistry;  // lives as long as the test program
-    registerAll(*out);
-    return out;
-  }();
-  return r;
-}
 
 /// Every regular file under `dir`, as absolute paths, sorted.
 std::set<fs::path> filesUnder(const fs::path& dir) {
@@ -47,14 +39,14 @@ std::vector<std::string> cookedNodes(const graph::CookResult& r) {
 
 TEST(ExporterFiles, EveryExporterDeclaresItselfASideEffectNode) {
   for (const char* type : {"ExportVTU", "ExportVDB", "ExportEXR", "ExportCurves"})
-    EXPECT_TRUE(registry().get(type).decl().hasSideEffects()) << type;
-  EXPECT_FALSE(registry().get("Propagate").decl().hasSideEffects());
+    EXPECT_TRUE(test::builtinNodes().get(type).decl().hasSideEffects()) << type;
+  EXPECT_FALSE(test::builtinNodes().get("Propagate").decl().hasSideEffects());
 }
 
 TEST(ExporterFiles, DefaultExampleListsItsFilesAndReRunsOnlyTheExporterWhoseFileChanged) {
   test::TempDir dir("exporter-files");
-  graph::Graph g =
-      graph::loadGraphFile(fs::path(TFD_SOURCE_DIR) / "examples" / "default.tfd.json", registry());
+  graph::Graph g = graph::loadGraphFile(fs::path(TFD_SOURCE_DIR) / "examples" / "default.tfd.json",
+                                        test::builtinNodes());
   // Coarser than the example's mesh and voxels, to keep the test fast.
   g.setParam("ball", "target_tets", std::int64_t(3000));
   g.setParam("vdb", "voxel_size", 0.08);

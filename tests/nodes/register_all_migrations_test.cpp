@@ -16,24 +16,16 @@
 #include "graph/graph_file.h"
 #include "graph/node_registry.h"
 #include "nodes/register_all.h"
+#include "tests/support/builtin_nodes.h"
 
 namespace tfd::nodes {
 namespace {
-
-const graph::NodeRegistry& registry() {
-  static const graph::NodeRegistry& r = *[] {
-    auto* out = new graph::NodeRegistry;  // lives as long as the test program
-    registerAll(*out);
-    return out;
-  }();
-  return r;
-}
 
 using Strings = std::vector<std::string>;
 const char* kFixture = TFD_TEST_DATA_DIR "/graphs/migrations/exporters_v1.tfd.json";
 
 TEST(NodeMigrations, ExportersOfTypeVersion1KeepTheirMeaning) {
-  const graph::Graph g = graph::loadGraphFile(kFixture, registry());
+  const graph::Graph g = graph::loadGraphFile(kFixture, test::builtinNodes());
   // ExportVTU 1 -> 2: raw appended data was called "binary".
   EXPECT_EQ(std::get<std::string>(g.param("vtu", "encoding")), "appended");
   EXPECT_EQ(std::get<std::string>(g.param("vtu_ascii", "encoding")), "ascii");
@@ -45,7 +37,7 @@ TEST(NodeMigrations, ExportersOfTypeVersion1KeepTheirMeaning) {
 }
 
 TEST(NodeMigrations, UpgradedFilesSaveAsTheCurrentTypeVersionAndLoadAgain) {
-  const graph::Graph g = graph::loadGraphFile(kFixture, registry());
+  const graph::Graph g = graph::loadGraphFile(kFixture, test::builtinNodes());
   const graph::Json saved = graph::graphToJson(g);
   for (const char* node : {"vtu", "vdb", "exr"}) {
     EXPECT_EQ(saved["nodes"][node]["typeVersion"], node == std::string("vdb") ? 3 : 2) << node;
@@ -54,23 +46,23 @@ TEST(NodeMigrations, UpgradedFilesSaveAsTheCurrentTypeVersionAndLoadAgain) {
   EXPECT_EQ(saved["nodes"]["exr"]["params"]["quantities"],
             graph::Json::parse(R"(["eigenvalues"])"));
   const std::string text = graph::graphToText(g);
-  const graph::Graph again = graph::parseGraph(text, registry(), "saved");
+  const graph::Graph again = graph::parseGraph(text, test::builtinNodes(), "saved");
   EXPECT_EQ(graph::graphToText(again), text);
 }
 
 TEST(NodeMigrations, ExportVdbOfTypeVersion2WritesNoDensityGridAsBefore) {
   // ExportVDB 2 -> 3: the `density` grid from a field is new; older files keep the grids they
   // wrote (density "none"), new nodes get the default, closeness to degeneracy.
-  const graph::Graph g =
-      graph::loadGraphFile(TFD_TEST_DATA_DIR "/graphs/nodes/exporters_v3.tfd.json", registry());
+  const graph::Graph g = graph::loadGraphFile(
+      TFD_TEST_DATA_DIR "/graphs/nodes/exporters_v3.tfd.json", test::builtinNodes());
   EXPECT_EQ(std::get<std::string>(g.param("vdb_v2", "density")), "none");
   EXPECT_EQ(std::get<std::string>(g.param("vdb_v3", "density")), "anisotropy");
-  const graph::Graph v1 = graph::loadGraphFile(kFixture, registry());
+  const graph::Graph v1 = graph::loadGraphFile(kFixture, test::builtinNodes());
   EXPECT_EQ(std::get<std::string>(v1.param("vdb", "density")), "none");
   const graph::Graph fresh = graph::parseGraph(
       R"({"format": "tfd-graph", "formatVersion": 2, "nodes": {
         "v": {"type": "ExportVDB", "typeVersion": 3, "params": {}}}, "links": []})",
-      registry(), "new.tfd.json");
+      test::builtinNodes(), "new.tfd.json");
   EXPECT_EQ(std::get<std::string>(fresh.param("v", "density")), "degeneracy");
 }
 
@@ -78,7 +70,7 @@ TEST(NodeMigrations, PointConstraintsOfTypeVersion1KeepTheirSupport) {
   // PointConstraint 1 -> 2: radius 0 (or none) meant the holding tet only; the new default
   // support is auto (a few mean edge lengths), so old files must say `tet` explicitly.
   const graph::Graph g = graph::loadGraphFile(
-      TFD_TEST_DATA_DIR "/graphs/migrations/point_constraint_v1.tfd.json", registry());
+      TFD_TEST_DATA_DIR "/graphs/migrations/point_constraint_v1.tfd.json", test::builtinNodes());
   EXPECT_EQ(std::get<std::string>(g.param("in_tet", "support")), "tet");
   EXPECT_EQ(std::get<std::string>(g.param("zero_radius", "support")), "tet");
   EXPECT_EQ(std::get<std::string>(g.param("with_radius", "support")), "radius");
@@ -88,7 +80,7 @@ TEST(NodeMigrations, PointConstraintsOfTypeVersion1KeepTheirSupport) {
   const graph::Graph fresh = graph::parseGraph(
       R"({"format": "tfd-graph", "formatVersion": 2, "nodes": {
         "p": {"type": "PointConstraint", "typeVersion": 2, "params": {}}}, "links": []})",
-      registry(), "new.tfd.json");
+      test::builtinNodes(), "new.tfd.json");
   EXPECT_EQ(std::get<std::string>(fresh.param("p", "support")), "auto");
 }
 
@@ -97,7 +89,7 @@ TEST(NodeMigrations, AnUnknownOldQuantityIsReportedNamingTheParameter) {
     "vdb": {"type": "ExportVDB", "typeVersion": 1, "params": {"quantities": "tensor, colour"}}},
     "links": []})";
   try {
-    graph::parseGraph(text, registry(), "old.tfd.json");
+    graph::parseGraph(text, test::builtinNodes(), "old.tfd.json");
     FAIL() << "loaded";
   } catch (const std::exception& e) {
     const std::string what = e.what();
@@ -110,7 +102,7 @@ TEST(NodeMigrations, ATypeVersionNewerThanTheReaderIsRefused) {
   const std::string text = R"({"format": "tfd-graph", "formatVersion": 2, "nodes": {
     "vtu": {"type": "ExportVTU", "typeVersion": 3, "params": {}}}, "links": []})";
   try {
-    graph::parseGraph(text, registry(), "new.tfd.json");
+    graph::parseGraph(text, test::builtinNodes(), "new.tfd.json");
     FAIL() << "loaded";
   } catch (const std::exception& e) {
     EXPECT_NE(std::string(e.what()).find("typeVersion 3"), std::string::npos) << e.what();
@@ -119,10 +111,10 @@ TEST(NodeMigrations, ATypeVersionNewerThanTheReaderIsRefused) {
 
 TEST(NodeMigrations, FormatVersion1FileWithEveryTypeLoads) {
   const char* path = TFD_TEST_DATA_DIR "/graphs/nodes/every_type_v1.tfd.json";
-  const graph::Graph g = graph::loadGraphFile(path, registry());
+  const graph::Graph g = graph::loadGraphFile(path, test::builtinNodes());
   std::set<std::string> types;
   for (const auto& node : g.nodes()) types.insert(node.type().name());
-  for (const graph::NodeType* t : registry().types()) {
+  for (const graph::NodeType* t : test::builtinNodes().types()) {
     EXPECT_TRUE(types.count(t->name()))
         << "node type " << t->name() << " is missing from " << path
         << ": add a node of it at typeVersion 1 (format version 1: positions in \"layout\")";
@@ -137,7 +129,7 @@ TEST(NodeMigrations, FormatVersion1FileWithEveryTypeLoads) {
   EXPECT_EQ(saved["nodes"]["smooth"]["ui"]["position"], graph::Json::parse("[750, 180]"));
   EXPECT_FALSE(saved.contains("layout"));
   const std::string text = graph::graphToText(g);
-  EXPECT_EQ(graph::graphToText(graph::parseGraph(text, registry(), "saved")), text);
+  EXPECT_EQ(graph::graphToText(graph::parseGraph(text, test::builtinNodes(), "saved")), text);
 }
 
 TEST(NodeMigrations, EveryTypeVersionOfEveryTypeHasAFixtureThatLoads) {
@@ -150,13 +142,13 @@ TEST(NodeMigrations, EveryTypeVersionOfEveryTypeHasAFixtureThatLoads) {
   }
   std::map<std::string, std::set<int>> seen;
   for (const fs::path& file : files) {
-    EXPECT_NO_THROW(graph::loadGraphFile(file, registry())) << file;
+    EXPECT_NO_THROW(graph::loadGraphFile(file, test::builtinNodes())) << file;
     std::ifstream in(file);
     const graph::Json doc = graph::Json::parse(in);
     for (const auto& [name, node] : doc["nodes"].items())
       seen[node["type"].get<std::string>()].insert(node["typeVersion"].get<int>());
   }
-  for (const graph::NodeType* t : registry().types()) {
+  for (const graph::NodeType* t : test::builtinNodes().types()) {
     for (int v = 1; v <= t->version(); ++v) {
       EXPECT_TRUE(seen[t->name()].count(v))
           << t->name() << " typeVersion " << v

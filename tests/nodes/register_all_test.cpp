@@ -12,6 +12,7 @@
 #include "graph/node_registry.h"
 #include "nodes/register_all.h"
 #include "nodes/value_types.h"
+#include "tests/support/builtin_nodes.h"
 #include "tests/support/registry_hash_check.h"
 #include "tests/support/temp_dir.h"
 #include "tests/support/vtk_xml_reader.h"
@@ -21,17 +22,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const graph::NodeRegistry& registry() {
-  static const graph::NodeRegistry& r = *[] {
-    auto* out = new graph::NodeRegistry;  // lives as long as the test program
-    registerAll(*out);
-    return out;
-  }();
-  return r;
-}
-
 graph::CookResult cookText(const std::string& text, const fs::path& outDir) {
-  graph::Graph g = graph::parseGraph(text, registry(), "test graph");
+  graph::Graph g = graph::parseGraph(text, test::builtinNodes(), "test graph");
   graph::CookOptions options;
   options.outDir = outDir;
   options.baseDir = outDir;
@@ -48,7 +40,7 @@ std::string errorOf(const graph::CookResult& result, const std::string& node) {
 }
 
 TEST(NodeTypes, EveryParameterOfEveryRegisteredTypeChangesTheHash) {
-  test::expectEveryParameterChangesHash(registry());
+  test::expectEveryParameterChangesHash(test::builtinNodes());
 }
 
 TEST(NodeTypes, TheFirstNodeTypesAreRegisteredUnderTheirPublicNames) {
@@ -56,7 +48,7 @@ TEST(NodeTypes, TheFirstNodeTypesAreRegisteredUnderTheirPublicNames) {
        {"TetMesh", "FieldExpression", "PointConstraint", "MergeConstraints", "Propagate",
         "ExportVTU", "ExportVDB", "ExportEXR", "ExtractDegenerateCurves", "ExportCurves",
         "CurveConstraint", "LocalSmooth"})
-    EXPECT_TRUE(registry().find(type) != nullptr) << type;
+    EXPECT_TRUE(test::builtinNodes().find(type) != nullptr) << type;
 }
 
 TEST(NodeTypes, EveryShippedExampleLoads) {
@@ -64,7 +56,7 @@ TEST(NodeTypes, EveryShippedExampleLoads) {
   for (const auto& entry : fs::directory_iterator(fs::path(TFD_SOURCE_DIR) / "examples")) {
     if (entry.path().string().ends_with(".tfd.json")) {
       SCOPED_TRACE(entry.path().string());
-      EXPECT_NO_THROW(graph::loadGraphFile(entry.path(), registry()));
+      EXPECT_NO_THROW(graph::loadGraphFile(entry.path(), test::builtinNodes()));
       ++examples;
     }
   }

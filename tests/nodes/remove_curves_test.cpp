@@ -12,6 +12,7 @@
 #include "graph/node_registry.h"
 #include "nodes/register_all.h"
 #include "nodes/value_types.h"
+#include "tests/support/builtin_nodes.h"
 #include "tests/support/temp_dir.h"
 #include "tests/support/vtk_xml_reader.h"
 
@@ -20,18 +21,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const graph::NodeRegistry& registry() {
-  static const graph::NodeRegistry* r = [] {
-    auto* reg = new graph::NodeRegistry;
-    registerAll(*reg);
-    return reg;
-  }();
-  return *r;
-}
-
 graph::Graph example() {
   graph::Graph g = graph::loadGraphFile(
-      fs::path(TFD_SOURCE_DIR) / "examples" / "remove_loop.tfd.json", registry());
+      fs::path(TFD_SOURCE_DIR) / "examples" / "remove_loop.tfd.json", test::builtinNodes());
   g.setParam("ball", "target_tets", std::int64_t(12000));
   return g;
 }
@@ -49,25 +41,19 @@ void setTiltedField(graph::Graph& g, const std::string& f, const std::string& gg
   g.setParam("field", "xz", "-0.295520*" + G);
 }
 
-std::string allText(const graph::NodeReport& r) {
-  std::string s;
-  for (const auto& m : r.messages) s += m.text + "\n";
-  return s;
-}
-
 TEST(RemoveCurvesNode, TheExampleRemovesItsLoopAndMarksTheRegion) {
   test::TempDir dir("remove-curves");
   graph::CookOptions options;
   options.outDir = dir.path();
   graph::Evaluator ev;
   const graph::CookResult r = ev.cook(example(), options);
-  ASSERT_TRUE(r.ok()) << allText(*r.report("remove"));
+  ASSERT_TRUE(r.ok()) << test::reportText(*r.report("remove"));
   const auto before = r.output<core::DegenerateCurves>("topology", "curves");
   const auto after = r.output<core::DegenerateCurves>("remove", "curves");
   ASSERT_EQ(before->size(), 2u) << before->summary();
   ASSERT_EQ(after->size(), 1u) << after->summary();
   EXPECT_FALSE(after->curve(0).closed) << "the straight curve stays";
-  const std::string info = allText(*r.report("remove"));
+  const std::string info = test::reportText(*r.report("remove"));
   EXPECT_NE(info.find("one-loop removal of the linear loop"), std::string::npos) << info;
   EXPECT_NE(info.find("2 curves -> 1"), std::string::npos) << info;
   EXPECT_NE(info.find("region: "), std::string::npos) << info;
@@ -100,7 +86,7 @@ TEST(RemoveCurvesNode, ARefusedPickFailsTheNodeAndNothingDownstreamIsWritten) {
   const graph::CookResult r = ev.cook(g, options);
   EXPECT_FALSE(r.ok());
   EXPECT_EQ(r.report("remove")->state, graph::NodeState::Failed);
-  const std::string error = allText(*r.report("remove"));
+  const std::string error = test::reportText(*r.report("remove"));
   EXPECT_NE(error.find("cannot be removed alone"), std::string::npos) << error;
   EXPECT_EQ(r.report("vtu")->state, graph::NodeState::UpstreamFailed);
   EXPECT_EQ(r.report("curves_after")->state, graph::NodeState::UpstreamFailed);
@@ -129,9 +115,9 @@ TEST(RemoveCurvesNode, TwoCurveAndOneCurveRemovalOnATetGenBall) {
     graph::Evaluator ev;
     const graph::CookResult r = ev.cook(g, options);
     ASSERT_EQ(r.output<core::DegenerateCurves>("topology", "curves")->size(), c.before);
-    ASSERT_TRUE(r.ok()) << allText(*r.report("remove"));
+    ASSERT_TRUE(r.ok()) << test::reportText(*r.report("remove"));
     EXPECT_EQ(r.output<core::DegenerateCurves>("remove", "curves")->size(), c.after);
-    EXPECT_NE(allText(*r.report("remove")).find(std::string(c.name) + " removal"),
+    EXPECT_NE(test::reportText(*r.report("remove")).find(std::string(c.name) + " removal"),
               std::string::npos);
   }
 }

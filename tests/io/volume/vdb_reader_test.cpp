@@ -88,13 +88,14 @@ TEST(VdbReader, MetadataOfAMissingOrForeignFileIsAnErrorNamingIt) {
 }
 
 // Files found by fuzz_info_vdb that kept `tfd info` busy for 4 to 44 s in a Release build:
-// a transform type name of gigabytes (after checked metadata), a format version from before
-// OpenVDB 2 (whose layout is not checked), and a file without grid offsets, whose trees
+// a transform type name of gigabytes (after checked metadata), format versions from before
+// OpenVDB 2 (214, and 0; their layout is not checked), and a file without grid offsets, whose trees
 // OpenVDB reads as soon as it opens it. Each is now refused at once, saying why.
 TEST(VdbReader, InfoRefusesWhatItCannotCheckBeforeOpenVdbReadsIt) {
   const std::pair<const char*, const char*> cases[] = {
       {"vdb_huge_transform_type.vdb", "a grid's transform type announces"},
       {"vdb_old_version.vdb", "its format version 214 is older than OpenVDB 2"},
+      {"vdb_version_zero.vdb", "its format version 0 is older than OpenVDB 2"},
       {"vdb_without_grid_offsets.vdb", "it was written as a stream"}};
   for (const auto& [name, reason] : cases) {
     const std::filesystem::path file = std::filesystem::path(TFD_TEST_DATA_DIR) / "damaged" / name;
