@@ -161,6 +161,13 @@ class GmshReader {
               ") cannot fit in a file of " + std::to_string(size_) + " bytes");
   }
 
+  /// A block's count, which must fit in what the section header announced and is not yet seen.
+  void requireBlockCount(long long count, long long left, const char* what) {
+    if (count < 0 || count > left)
+      s_.fail("a block announces " + std::to_string(count) + " " + what + ", but the header " +
+              "leaves " + std::to_string(left));
+  }
+
   void readNodes2() {
     nextLine("the number of nodes");
     const long long n = s_.integer("the number of nodes");
@@ -195,6 +202,7 @@ class GmshReader {
       }
       parametric = s_.integer("the parametric flag");
       count = s_.integer("the number of nodes in the block");
+      requireBlockCount(count, total - seen, "nodes");
       (void)parametric;  // parametric coordinates follow x y z; they are ignored
       if (v40_) {
         for (long long i = 0; i < count; ++i) {
@@ -279,6 +287,7 @@ class GmshReader {
       }
       const long long type = s_.integer("the element type");
       const long long count = s_.integer("the number of elements in the block");
+      requireBlockCount(count, total - seen, "elements");
       for (long long i = 0; i < count; ++i) {
         itemLine(seen + i, total, "elements");
         element(s_.integer("an element tag"), type);

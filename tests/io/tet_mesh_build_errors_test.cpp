@@ -146,6 +146,24 @@ TEST_F(TetMeshErrors, GmshTruncatedSectionQuotesItsEndLinePrintably) {
   EXPECT_EQ(m.find('\x01'), std::string::npos) << m;
 }
 
+// Found by CI's fuzz run: a v4.1 node block announcing -14 nodes made the reader size a vector
+// with it (std::length_error, not our error); a block may hold only what the header has left.
+TEST_F(TetMeshErrors, GmshBlockCountsMustFitTheHeader) {
+  const std::string format4 = "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
+  std::string m = error(
+      [&] { readGmsh(file("n.msh", format4 + "$Nodes\n1 4 1 4\n3 1 0 -14\n1\n2\n$EndNodes\n")); });
+  EXPECT_NE(m.find("a block announces -14 nodes, but the header leaves 4"), std::string::npos) << m;
+  m = error(
+      [&] { readGmsh(file("m.msh", format4 + "$Nodes\n1 4 1 4\n3 1 0 9\n1\n2\n$EndNodes\n")); });
+  EXPECT_NE(m.find("a block announces 9 nodes, but the header leaves 4"), std::string::npos) << m;
+  m = error([&] {
+    readGmsh(file("e.msh", format4 + "$Nodes\n1 4 1 4\n3 1 0 4\n1\n2\n3\n4\n0 0 0\n1 0 0\n0 1 0\n"
+                                     "0 0 1\n$EndNodes\n$Elements\n1 1 1 1\n3 1 4 -2\n"));
+  });
+  EXPECT_NE(m.find("a block announces -2 elements, but the header leaves 1"), std::string::npos)
+      << m;
+}
+
 TEST_F(TetMeshErrors, VtuProblems) {
   auto vtu = [](const std::string& types, const std::string& extraRoot = "") {
     return "<VTKFile type=\"UnstructuredGrid\"" + extraRoot +
