@@ -4,6 +4,7 @@
 #include <cctype>
 
 #include "core/error.h"
+#include "io/text_scanner.h"
 
 namespace tfd::io {
 
@@ -209,8 +210,10 @@ class Parser {
     }
     return out;
   }
+  /// Messages quote names and text from the file: made printable (no raw bytes reach a terminal).
   [[noreturn]] void fail(const std::string& message) const {
-    throw core::Error("file '" + file_ + "', line " + std::to_string(line_) + ": " + message);
+    throw core::Error("file '" + file_ + "', line " + std::to_string(line_) + ": " +
+                      printableText(message));
   }
 
   std::string_view d_;

@@ -164,6 +164,16 @@ TEST_F(TetMeshErrors, GmshBlockCountsMustFitTheHeader) {
       << m;
 }
 
+// Found by a local fuzz run: the VTU's XML parser quoted an unknown entity raw, control bytes
+// and line breaks included; its messages are now printable like every other reader's.
+TEST_F(TetMeshErrors, VtuXmlMessagesArePrintable) {
+  const std::string m = error([&] {
+    readVtu(file("x.vtu", "<VTKFile type=\"UnstructuredGrid\">&a\x01\nb\x1c;</VTKFile>\n"));
+  });
+  EXPECT_NE(m.find("unknown entity '&a\\x01\\x0ab\\x1c;'"), std::string::npos) << m;
+  for (unsigned char c : m) EXPECT_FALSE(c < 0x20 || c == 0x7f) << m;
+}
+
 TEST_F(TetMeshErrors, VtuProblems) {
   auto vtu = [](const std::string& types, const std::string& extraRoot = "") {
     return "<VTKFile type=\"UnstructuredGrid\"" + extraRoot +
