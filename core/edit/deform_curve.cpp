@@ -127,8 +127,7 @@ std::vector<std::string> DeformCurveReport::lines() const {
                 editNumber(tolerance) + ", the region's mean edge length)");
   std::string t = "tries: " + std::to_string(tries.size()) + describeTries(tries);
   out.push_back(t);
-  out.push_back("time " + editNumber(seconds) + " s");
-  out.push_back(std::to_string(curvesBefore) + " curves -> " + std::to_string(curvesAfter));
+  addEditClosingLines(out, seconds, curvesBefore, curvesAfter);
   return out;
 }
 

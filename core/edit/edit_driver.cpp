@@ -13,6 +13,12 @@ std::string editNumber(double x) {
   return buf;
 }
 
+void addEditClosingLines(std::vector<std::string>& out, double seconds, std::size_t curvesBefore,
+                         std::size_t curvesAfter) {
+  out.push_back("time " + editNumber(seconds) + " s");
+  out.push_back(std::to_string(curvesBefore) + " curves -> " + std::to_string(curvesAfter));
+}
+
 std::vector<int> curveSourceTets(const TetMesh& mesh, const DegenerateCurve& c) {
   std::vector<int> tets;
   for (const PointSource& s : c.sources)

@@ -167,8 +167,7 @@ std::vector<std::string> ReconnectCurvesReport::lines() const {
   out.push_back(sheetField.summary());
   out.push_back("new curves: " + newCurves[0] + "; " + newCurves[1]);
   out.push_back("tries: " + std::to_string(tries.size()) + describeTries(tries));
-  out.push_back("time " + editNumber(seconds) + " s");
-  out.push_back(std::to_string(curvesBefore) + " curves -> " + std::to_string(curvesAfter));
+  addEditClosingLines(out, seconds, curvesBefore, curvesAfter);
   return out;
 }
 

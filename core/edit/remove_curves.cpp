@@ -150,8 +150,7 @@ std::vector<std::string> RemoveCurvesReport::lines() const {
     t += " (" + std::to_string(widenings) + " with one more ring of tets kept from other curves)";
   t += describeTries(tries);
   out.push_back(t);
-  out.push_back("time " + editNumber(seconds) + " s");
-  out.push_back(std::to_string(curvesBefore) + " curves -> " + std::to_string(curvesAfter));
+  addEditClosingLines(out, seconds, curvesBefore, curvesAfter);
   return out;
 }
 
