@@ -96,14 +96,17 @@ void useSmallMemoryBudget() {
 // std::bad_alloc, which our readers turn into an error naming the file. So new and delete go
 // through malloc and free here: with allocator_may_return_null, an allocation above the
 // targets' 256 MB budget returns null and new throws, as under the cap. ASAN_OPTIONS still
-// overrides each flag.
+// overrides each flag. Without ASan (scripts/fuzz --fast) new refuses the same sizes itself.
 extern "C" const char* __asan_default_options() {
   return "allocator_may_return_null=1:max_allocation_size_mb=256";
 }
 
 namespace {
 
+constexpr std::size_t kLargestAllocation = std::size_t(256) << 20;
+
 void* allocateOrThrow(std::size_t size, std::size_t alignment = 0) {
+  if (size > kLargestAllocation) throw std::bad_alloc();
   if (size == 0) size = 1;
   void* p = alignment > alignof(std::max_align_t)
                 ? std::aligned_alloc(alignment, (size + alignment - 1) / alignment * alignment)

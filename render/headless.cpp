@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "render/gl_api.h"
+#include "render/gl_libraries_pinned.h"
 
 namespace tfd::render {
 
@@ -40,6 +41,7 @@ HeadlessContext::HeadlessContext(int width, int height)
   if (width < 1 || height < 1 || width > 16384 || height > 16384)
     throw std::runtime_error("headless OpenGL: size " + std::to_string(width) + "x" +
                              std::to_string(height) + " is outside 1..16384");
+  pinGlLibrariesUnderSanitizers();
   egl_->display = surfacelessDisplay();
   EGLint major = 0, minor = 0;
   if (!eglInitialize(egl_->display, &major, &minor)) fail("eglInitialize failed");

@@ -8,6 +8,8 @@
 #include <cmath>
 #include <string>
 
+#include "render/gl_libraries_pinned.h"
+
 namespace tfd::ui {
 
 namespace {
@@ -15,6 +17,7 @@ constexpr double kClickSlop = 4;  // pixels a click may move and still be a clic
 }
 
 ViewportWidget::ViewportWidget(QWidget* parent) : QOpenGLWidget(parent) {
+  render::pinGlLibrariesUnderSanitizers();
   setFocusPolicy(Qt::StrongFocus);
   setMinimumSize(200, 150);
   setMouseTracking(false);
