@@ -12,12 +12,20 @@
 // or three faces of t are shared with tets of S, and every edge and vertex of t that some tet of
 // S holds lies on one of those faces. Edge and vertex occupancy counts make the test O(1).
 // Memory: a few bytes per tet, edge and vertex of the mesh.
+#include <array>
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 #include "core/tet_mesh.h"
 
 namespace tfd::core {
+
+/// Per tet, the tet across the face opposite each local vertex (−1 on the domain surface):
+/// one 16-byte row per tet instead of tetFaces() then faceTets() (two dependent cache misses
+/// per face in the region growing's hot loops). Filled in parallel, 16 bytes per mesh tet.
+using FaceNeighbours = std::unique_ptr<std::array<int, 4>[]>;
+FaceNeighbours faceNeighbours(const TetMesh& mesh);
 
 class TetSet {
  public:
@@ -37,12 +45,15 @@ class TetSet {
   int sharedFaces(int tet) const;
   /// The member tets, ascending. O(mesh tets).
   std::vector<int> tets() const;
+  /// The tet across the face opposite local vertex i of `tet` (−1 on the domain surface).
+  const std::array<int, 4>& neighbours(int tet) const { return neighbours_[tet]; }
 
  private:
   bool contactIsDisk(int tet, int self) const;
   bool complementContactIsDisk(int tet) const;
 
   const TetMesh& mesh_;
+  FaceNeighbours neighbours_;
   std::vector<unsigned char> in_;
   std::vector<int> vertexCount_, edgeCount_;
   int tetsAround(int edge) const;
