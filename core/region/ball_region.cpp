@@ -7,9 +7,6 @@
 #include <limits>
 #include <memory>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include "core/error.h"
 #include "core/region/bucket_queue.h"
 #include "core/region/tet_set.h"
@@ -19,28 +16,8 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-Vec3 centroid(const TetMesh& mesh, int t) {
-  const auto& v = mesh.tets()[t];
-  const auto& p = mesh.positions();
-  return 0.25 * (p[v[0]] + p[v[1]] + p[v[2]] + p[v[3]]);
-}
-
 /// Bucket width of the fronts' queues: a quarter of the mean edge length.
 double bucketWidth(const TetMesh& mesh) { return std::max(0.25 * mesh.meanEdgeLength(), 1e-300); }
-
-/// Per mesh tet, its face neighbours (TetSet's) and its centroid, filled in parallel: the
-/// fronts below read one row per tet they reach instead of the tet's corners and faces.
-struct TetTables {
-  const std::array<int, 4>* neighbours = nullptr;
-  std::unique_ptr<Vec3[]> centroids;
-  TetTables(const TetMesh& mesh, const std::array<int, 4>* faceNeighbours)
-      : neighbours(faceNeighbours), centroids(new Vec3[mesh.tetCount()]) {
-    tbb::parallel_for(tbb::blocked_range<int>(0, int(mesh.tetCount()), 4096),
-                      [&](const tbb::blocked_range<int>& r) {
-                        for (int t = r.begin(); t != r.end(); ++t) centroids[t] = centroid(mesh, t);
-                      });
-  }
-};
 
 /// The centroid distance of tetDistances(), computed on demand: the front is a label-correcting
 /// Dijkstra over face-adjacent tets (a tet takes the distance to its neighbour's source when
@@ -52,10 +29,9 @@ struct TetTables {
 /// cost follows the grown set, not the bound.
 class DistanceFront {
  public:
-  DistanceFront(const TetMesh& mesh, const TetTables& tables, std::span<const int> sources,
+  DistanceFront(const TetMesh& mesh, const TetRows& rows, std::span<const int> sources,
                 double bound)
-      : neighbours_(tables.neighbours),
-        centroids_(tables.centroids.get()),
+      : rows_(rows),
         bound_(bound),
         d_(mesh.tetCount(), kInf),
         source_(mesh.tetCount(), -1),
@@ -89,10 +65,10 @@ class DistanceFront {
       heap_.pop();
       if (dt > d_[t]) continue;
       if (++steps_ % 8192 == 0) progress.throwIfCancelled();
-      const Vec3 origin = centroids_[source_[t]];
-      for (int n : neighbours_[t]) {
+      const Vec3 origin = rows_[source_[t]].centroid;
+      for (int n : rows_[t].neighbours) {
         if (n < 0 || d_[n] == 0) continue;
-        const double dn = (centroids_[n] - origin).norm();
+        const double dn = (rows_[n].centroid - origin).norm();
         if (dn <= bound_ && dn < d_[n]) {
           d_[n] = dn, source_[n] = source_[t];
           heap_.emplace(dn, n);
@@ -102,8 +78,7 @@ class DistanceFront {
     popped_ = heap_.empty() ? kInf : upTo;
   }
 
-  const std::array<int, 4>* neighbours_;
-  const Vec3* centroids_;
+  const TetRows& rows_;
   double bound_, margin_ = 0, step_ = 0, popped_ = -kInf;
   std::vector<double> d_;
   std::vector<int> source_;
@@ -259,9 +234,8 @@ std::string shrink(TetSet& set, const std::vector<unsigned char>& isSeed,
 
 std::vector<double> tetDistances(const TetMesh& mesh, std::span<const int> sources, double bound,
                                  const Progress& progress) {
-  const FaceNeighbours neighbours = faceNeighbours(mesh);
-  const TetTables tables(mesh, neighbours.get());
-  DistanceFront front(mesh, tables, sources, bound);
+  const TetRows rows(mesh);
+  DistanceFront front(mesh, rows, sources, bound);
   front.settleAll(progress);
   return front.release();
 }
@@ -285,14 +259,14 @@ BallRegion growBallRegion(const TetMesh& mesh, std::span<const int> seedSpan,
   // the distance to the seeds' centre, so growth can always go on.
   const double bound1 = std::max(options.distance, 8 * mesh.meanEdgeLength());
   TetSet set(mesh);
-  const TetTables tables(mesh, &set.neighbours(0));
-  DistanceFront d1(mesh, tables, seeds, bound1);
+  const TetRows& rows = set.rows();
+  DistanceFront d1(mesh, rows, seeds, bound1);
   Vec3 centre = Vec3::Zero();
-  for (int s : seeds) centre += tables.centroids[s];
+  for (int s : seeds) centre += rows[s].centroid;
   centre /= double(seeds.size());
   auto key1 = [&](int t) {
     const double d = d1.at(t, progress);
-    return d < kInf ? d : bound1 + (tables.centroids[t] - centre).norm();
+    return d < kInf ? d : bound1 + (rows[t].centroid - centre).norm();
   };
   std::size_t seedsIn = 0;
   {
@@ -329,7 +303,7 @@ BallRegion growBallRegion(const TetMesh& mesh, std::span<const int> seedSpan,
   // Step 3.
   if (options.distance > 0) {
     const std::vector<int> core = set.tets();
-    DistanceFront front(mesh, tables, core, options.distance);
+    DistanceFront front(mesh, rows, core, options.distance);
     front.settleAll(progress);
     const std::vector<double> d3 = front.release();
     Grower grower(set, forbidden, [&](int t) { return d3[t]; });

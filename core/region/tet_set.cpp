@@ -1,8 +1,5 @@
 #include "core/region/tet_set.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 namespace tfd::core {
 namespace {
 
@@ -13,23 +10,9 @@ constexpr int kEdgeOf[4][4] = {{-1, 0, 1, 2}, {0, -1, 3, 4}, {1, 3, -1, 5}, {2, 
 
 }  // namespace
 
-FaceNeighbours faceNeighbours(const TetMesh& mesh) {
-  const int n = static_cast<int>(mesh.tetCount());
-  FaceNeighbours out(new std::array<int, 4>[n]);
-  tbb::parallel_for(tbb::blocked_range<int>(0, n, 4096), [&](const tbb::blocked_range<int>& r) {
-    for (int t = r.begin(); t != r.end(); ++t) {
-      for (int i = 0; i < 4; ++i) {
-        const auto& ft = mesh.faceTets()[mesh.tetFaces()[t][i]];
-        out[t][i] = ft[0] == t ? ft[1] : ft[0];
-      }
-    }
-  });
-  return out;
-}
-
 TetSet::TetSet(const TetMesh& mesh)
     : mesh_(mesh),
-      neighbours_(faceNeighbours(mesh)),
+      rows_(mesh),
       in_(mesh.tetCount(), 0),
       vertexCount_(mesh.vertexCount(), 0),
       edgeCount_(mesh.edges().size(), 0),
@@ -68,7 +51,7 @@ int TetSet::tetsAround(int edge) const {
 
 int TetSet::sharedFaces(int tet) const {
   int n = 0;
-  for (int other : neighbours_[tet]) n += other >= 0 && in_[other] != 0;
+  for (int other : neighbours(tet)) n += other >= 0 && in_[other] != 0;
   return n;
 }
 
@@ -105,7 +88,7 @@ bool TetSet::contactIsDisk(int tet, int self) const {
   bool faceShared[4];  // face opposite local vertex i
   int shared = 0;
   for (int i = 0; i < 4; ++i) {
-    const int other = neighbours_[tet][i];
+    const int other = neighbours(tet)[i];
     faceShared[i] = other >= 0 && in_[other] != 0;
     shared += faceShared[i];
   }
@@ -120,7 +103,7 @@ bool TetSet::complementContactIsDisk(int tet) const {
   bool faceOut[4];
   int out = 0;
   for (int i = 0; i < 4; ++i) {
-    const int other = neighbours_[tet][i];
+    const int other = neighbours(tet)[i];
     faceOut[i] = other < 0 || in_[other] == 0;
     out += faceOut[i];
   }

@@ -14,18 +14,12 @@
 // Memory: a few bytes per tet, edge and vertex of the mesh.
 #include <array>
 #include <cstddef>
-#include <memory>
 #include <vector>
 
+#include "core/region/tet_rows.h"
 #include "core/tet_mesh.h"
 
 namespace tfd::core {
-
-/// Per tet, the tet across the face opposite each local vertex (−1 on the domain surface):
-/// one 16-byte row per tet instead of tetFaces() then faceTets() (two dependent cache misses
-/// per face in the region growing's hot loops). Filled in parallel, 16 bytes per mesh tet.
-using FaceNeighbours = std::unique_ptr<std::array<int, 4>[]>;
-FaceNeighbours faceNeighbours(const TetMesh& mesh);
 
 class TetSet {
  public:
@@ -46,14 +40,16 @@ class TetSet {
   /// The member tets, ascending. O(mesh tets).
   std::vector<int> tets() const;
   /// The tet across the face opposite local vertex i of `tet` (−1 on the domain surface).
-  const std::array<int, 4>& neighbours(int tet) const { return neighbours_[tet]; }
+  const std::array<int, 4>& neighbours(int tet) const { return rows_[tet].neighbours; }
+  /// Neighbours and centroids of the tets reached so far (shared with the distance fronts).
+  const TetRows& rows() const { return rows_; }
 
  private:
   bool contactIsDisk(int tet, int self) const;
   bool complementContactIsDisk(int tet) const;
 
   const TetMesh& mesh_;
-  FaceNeighbours neighbours_;
+  TetRows rows_;
   std::vector<unsigned char> in_;
   std::vector<int> vertexCount_, edgeCount_;
   int tetsAround(int edge) const;
