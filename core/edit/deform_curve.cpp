@@ -29,18 +29,21 @@ CurvePick resolvePick(const TetMesh& mesh, const DegenerateCurves& all,
   return resolveCurvePick(mesh, all, o.curves, o.pick);
 }
 
+/// Mean length of the region's edges, summed in ascending edge id (flags per mesh edge rather
+/// than sorting the six edges of every region tet).
 double meanRegionEdge(const TetMesh& mesh, const std::vector<int>& tets) {
-  std::vector<int> edges;
+  std::vector<unsigned char> in(mesh.edges().size(), 0);
   for (int t : tets)
-    for (int e : mesh.tetEdges()[t]) edges.push_back(e);
-  std::sort(edges.begin(), edges.end());
-  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    for (int e : mesh.tetEdges()[t]) in[e] = 1;
   double sum = 0;
-  for (int e : edges) {
+  std::size_t count = 0;
+  for (std::size_t e = 0; e < in.size(); ++e) {
+    if (!in[e]) continue;
     const auto& ab = mesh.edges()[e];
     sum += (mesh.positions()[ab[0]] - mesh.positions()[ab[1]]).norm();
+    ++count;
   }
-  return edges.empty() ? 0 : sum / double(edges.size());
+  return count == 0 ? 0 : sum / double(count);
 }
 
 /// Hausdorff distance, over the region, between the new curve and the expected course (γ2 and

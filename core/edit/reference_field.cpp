@@ -2,6 +2,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 
 #include <algorithm>
 #include <array>
@@ -92,6 +93,7 @@ class Propagation {
       add(best);
       ++count;
     }
+    out_.maxHolonomyDefect = maxHolonomyDefect();
     return std::move(out_);
   }
 
@@ -133,6 +135,32 @@ class Propagation {
     if (s == 1) return !hasU_[r.v[faces[0]]];  // the opposite corner must be new
     if (s == 2) return !known_[r.e[kEdgeOf[faces[0]][faces[1]]]];  // and the edge between them
     return s == 3;
+  }
+
+  /// Worst defect over the four triangles of every tet. A jump is final once set, so this is
+  /// the same whenever it is computed: after the (sequential) propagation, in parallel; the
+  /// maximum does not depend on the order.
+  double maxHolonomyDefect() const {
+    return tbb::parallel_reduce(
+        tbb::blocked_range<int>(0, static_cast<int>(tets_.size()), 1024), 0.0,
+        [&](const tbb::blocked_range<int>& b, double worst) {
+          for (int t = b.begin(); t != b.end(); ++t) {
+            const RegionTet& r = tets_[t];
+            for (int skip = 0; skip < 4; ++skip) {  // the four triangles
+              int c[3], k = 0;
+              for (int i = 0; i < 4; ++i)
+                if (i != skip) c[k++] = i;
+              const int a = r.v[c[0]], bv = r.v[c[1]], m = r.v[c[2]];
+              const double defect = jump(r.e[kEdgeOf[c[0]][c[1]]], a, bv) +
+                                    jump(r.e[kEdgeOf[c[1]][c[2]]], bv, m) +
+                                    jump(r.e[kEdgeOf[c[2]][c[0]]], m, a) -
+                                    sphericalTriangleArea(n_[a], n_[bv], n_[m]);
+              worst = std::max(worst, std::abs(defect));
+            }
+          }
+          return worst;
+        },
+        [](double x, double y) { return std::max(x, y); });
   }
 
   double jump(int e, int from, int to) const { return orientedJump(out_.jumps[e], from, to); }
@@ -198,16 +226,6 @@ class Propagation {
         setJump(r.e[unknown], a, b, signedAngle(out_.reference[b], moved, n_[b]));
         progress = true;
       }
-    }
-    for (int skip = 0; skip < 4; ++skip) {  // the four triangles
-      int c[3], k = 0;
-      for (int i = 0; i < 4; ++i)
-        if (i != skip) c[k++] = i;
-      const int a = r.v[c[0]], b = r.v[c[1]], m = r.v[c[2]];
-      const double defect =
-          jump(r.e[kEdgeOf[c[0]][c[1]]], a, b) + jump(r.e[kEdgeOf[c[1]][c[2]]], b, m) +
-          jump(r.e[kEdgeOf[c[2]][c[0]]], m, a) - sphericalTriangleArea(n_[a], n_[b], n_[m]);
-      out_.maxHolonomyDefect = std::max(out_.maxHolonomyDefect, std::abs(defect));
     }
     for (int nb : r.nb)
       if (nb >= 0 && !visited_[nb]) queue_[std::min(shared(nb), 3) - 1].push_back(nb);

@@ -9,10 +9,6 @@
 namespace tfd::core {
 namespace {
 
-int lookup(const std::vector<int>& table, int id) {
-  return id >= 0 && static_cast<std::size_t>(id) < table.size() ? table[id] : -1;
-}
-
 /// Ascending unique ids of `ids` (each < `count`), their local index in `table` (size count,
 /// −1 elsewhere). A flag per id instead of sorting the repeats: only the unique ids are sorted.
 std::vector<int> uniqueAscending(const std::vector<int>& ids, std::size_t count,
@@ -32,10 +28,6 @@ std::vector<int> uniqueAscending(const std::vector<int>& ids, std::size_t count,
 }
 
 }  // namespace
-
-int RegionComplex::localVertex(int meshVertex) const { return lookup(vertexLocal, meshVertex); }
-int RegionComplex::localEdge(int meshEdge) const { return lookup(edgeLocal, meshEdge); }
-int RegionComplex::localTet(int meshTet) const { return lookup(tetLocal, meshTet); }
 
 int RegionComplex::components() const {
   const int n = static_cast<int>(vertices.size());

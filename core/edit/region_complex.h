@@ -21,14 +21,20 @@ struct RegionComplex {
   /// neighbour[start[i] .. start[i+1]), ascending, and neighbourEdge the local edge joining them.
   std::vector<int> start, neighbour, neighbourEdge;
 
-  int localVertex(int meshVertex) const;  ///< −1 when not in the region
-  int localEdge(int meshEdge) const;      ///< −1 when not in the region
-  int localTet(int meshTet) const;        ///< −1 when not in the region
+  /// −1 when not in the region (inline: the hot loops of §6.3 look up every neighbour).
+  int localVertex(int meshVertex) const { return lookup(vertexLocal, meshVertex); }
+  int localEdge(int meshEdge) const { return lookup(edgeLocal, meshEdge); }
+  int localTet(int meshTet) const { return lookup(tetLocal, meshTet); }
   /// Number of connected pieces of the vertex graph (0 for an empty region).
   int components() const;
 
   /// Local index per mesh vertex / edge / tet (−1 outside); filled by regionComplex().
   std::vector<int> vertexLocal, edgeLocal, tetLocal;
+
+ private:
+  static int lookup(const std::vector<int>& table, int id) {
+    return id >= 0 && static_cast<std::size_t>(id) < table.size() ? table[id] : -1;
+  }
 };
 
 /// Throws core::Error when `tets` is empty or holds an id that is not a tet of `mesh`.

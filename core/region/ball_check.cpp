@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cstdint>
 #include <numeric>
-#include <unordered_map>
-#include <unordered_set>
 #include <vector>
 
 namespace tfd::core {
@@ -86,39 +84,51 @@ BallCheck checkTopologicalBall(const TetMesh& mesh, std::span<const int> tetSpan
     }
   }
   r.boundaryFaces = int(faces.size());
-  std::unordered_map<std::uint64_t, std::vector<int>> edgeFaces;  // edge -> boundary faces
-  std::unordered_map<int, std::vector<int>> vertexFaces;          // vertex -> boundary faces
+  // Edges and vertices of the boundary faces as sorted (key, face) lists: each run of equal
+  // keys is the faces around one edge or vertex (cheaper than hash maps of lists).
+  std::vector<std::pair<std::uint64_t, int>> edgeFaces;  // edge -> boundary faces
+  std::vector<std::pair<int, int>> vertexFaces;          // vertex -> boundary faces
+  edgeFaces.reserve(3 * faces.size());
+  vertexFaces.reserve(3 * faces.size());
   for (std::size_t i = 0; i < faces.size(); ++i) {
     const auto& f = mesh.faces()[faces[i]];
     for (int k = 0; k < 3; ++k) {
-      edgeFaces[edgeKey(f[k], f[(k + 1) % 3])].push_back(int(i));
-      vertexFaces[f[k]].push_back(int(i));
+      edgeFaces.emplace_back(edgeKey(f[k], f[(k + 1) % 3]), int(i));
+      vertexFaces.emplace_back(f[k], int(i));
     }
   }
-  int badEdges = 0;
+  std::sort(edgeFaces.begin(), edgeFaces.end());
+  std::sort(vertexFaces.begin(), vertexFaces.end());
+  int badEdges = 0, edgeCount = 0;
   UnionFind surface(faces.size());
-  for (const auto& [key, list] : edgeFaces) {
-    if (list.size() != 2) ++badEdges;
-    for (std::size_t k = 1; k < list.size(); ++k) surface.join(list[0], list[k]);
+  for (std::size_t i = 0, j; i < edgeFaces.size(); i = j) {
+    for (j = i + 1; j < edgeFaces.size() && edgeFaces[j].first == edgeFaces[i].first; ++j)
+      surface.join(edgeFaces[i].second, edgeFaces[j].second);
+    ++edgeCount;
+    badEdges += j - i != 2;
   }
   r.boundaryComponents = faces.empty() ? 0 : surface.roots();
-  r.eulerCharacteristic = int(vertexFaces.size()) - int(edgeFaces.size()) + int(faces.size());
 
   // Pinched vertices: the faces around a vertex must form one fan (connected through edges
   // at that vertex).
-  int pinched = 0;
-  for (const auto& [v, list] : vertexFaces) {
-    UnionFind fan(list.size());
-    std::unordered_map<int, int> firstAt;  // other vertex of an edge at v -> fan index
-    for (std::size_t i = 0; i < list.size(); ++i) {
-      for (int w : mesh.faces()[faces[list[i]]]) {
-        if (w == v) continue;
-        const auto [it, fresh] = firstAt.emplace(w, int(i));
-        if (!fresh) fan.join(int(i), it->second);
-      }
+  int pinched = 0, vertexCount = 0;
+  std::vector<std::pair<int, int>> spokes;  // (other vertex of an edge at v, fan index)
+  for (std::size_t i = 0, j; i < vertexFaces.size(); i = j) {
+    const int v = vertexFaces[i].first;
+    for (j = i + 1; j < vertexFaces.size() && vertexFaces[j].first == v; ++j) {
     }
+    ++vertexCount;
+    spokes.clear();
+    for (std::size_t k = i; k < j; ++k)
+      for (int w : mesh.faces()[faces[vertexFaces[k].second]])
+        if (w != v) spokes.emplace_back(w, int(k - i));
+    std::sort(spokes.begin(), spokes.end());
+    UnionFind fan(j - i);
+    for (std::size_t k = 1; k < spokes.size(); ++k)
+      if (spokes[k].first == spokes[k - 1].first) fan.join(spokes[k].second, spokes[k - 1].second);
     pinched += fan.roots() != 1;
   }
+  r.eulerCharacteristic = vertexCount - edgeCount + int(faces.size());
 
   if (r.components != 1) {
     r.problem = "the tets form " + std::to_string(r.components) + " separate pieces";

@@ -8,7 +8,7 @@
 // surface) is a closed 2-manifold (every boundary edge on exactly two boundary faces, the
 // boundary faces around every boundary vertex one cycle); the boundary is connected (no
 // cavity); and its Euler characteristic V − E + F is 2. A compact connected polyhedron in R³
-// whose boundary is one 2-sphere is a ball (Alexander). Cost: O(set size), hashed for the
+// whose boundary is one 2-sphere is a ball (Alexander). Cost: O(set size), sorted lists for the
 // boundary, plus one int per mesh tet to index the members.
 #include <span>
 #include <string>

@@ -1,13 +1,14 @@
 #include "core/region/ball_region.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <limits>
 #include <memory>
-#include <queue>
 
 #include "core/error.h"
+#include "core/region/bucket_queue.h"
 #include "core/region/tet_set.h"
 
 namespace tfd::core {
@@ -15,14 +16,8 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-Vec3 centroid(const TetMesh& mesh, int t) {
-  const auto& v = mesh.tets()[t];
-  const auto& p = mesh.positions();
-  return 0.25 * (p[v[0]] + p[v[1]] + p[v[2]] + p[v[3]]);
-}
-
-using Entry = std::pair<double, int>;
-using MinHeap = std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>>;
+/// Bucket width of the fronts' queues: a quarter of the mean edge length.
+double bucketWidth(const TetMesh& mesh) { return std::max(0.25 * mesh.meanEdgeLength(), 1e-300); }
 
 /// The centroid distance of tetDistances(), computed on demand: the front is a label-correcting
 /// Dijkstra over face-adjacent tets (a tet takes the distance to its neighbour's source when
@@ -34,13 +29,13 @@ using MinHeap = std::priority_queue<Entry, std::vector<Entry>, std::greater<Entr
 /// cost follows the grown set, not the bound.
 class DistanceFront {
  public:
-  DistanceFront(const TetMesh& mesh, std::span<const int> sources, double bound)
-      : mesh_(mesh),
+  DistanceFront(const TetMesh& mesh, const TetRows& rows, std::span<const int> sources,
+                double bound)
+      : rows_(rows),
         bound_(bound),
         d_(mesh.tetCount(), kInf),
         source_(mesh.tetCount(), -1),
-        centroids_(new Vec3[mesh.tetCount()]),
-        known_(mesh.tetCount(), 0) {
+        heap_(bucketWidth(mesh)) {
     double longest = 0;
     for (const auto& e : mesh.edges())
       longest = std::max(longest, (mesh.positions()[e[0]] - mesh.positions()[e[1]]).norm());
@@ -49,7 +44,6 @@ class DistanceFront {
     for (int s : sources) {
       if (d_[s] == 0) continue;
       d_[s] = 0, source_[s] = s;
-      centroidOf(s);
       heap_.emplace(0.0, s);
     }
   }
@@ -64,10 +58,6 @@ class DistanceFront {
   std::vector<double> release() { return std::move(d_); }
 
  private:
-  const Vec3& centroidOf(int t) {
-    if (!known_[t]) centroids_[t] = centroid(mesh_, t), known_[t] = 1;
-    return centroids_[t];
-  }
   /// Pops every key ≤ upTo.
   void advance(double upTo, const Progress& progress) {
     while (!heap_.empty() && heap_.top().first <= upTo) {
@@ -75,12 +65,10 @@ class DistanceFront {
       heap_.pop();
       if (dt > d_[t]) continue;
       if (++steps_ % 8192 == 0) progress.throwIfCancelled();
-      const Vec3 origin = centroids_[source_[t]];
-      for (int f : mesh_.tetFaces()[t]) {
-        const auto& ft = mesh_.faceTets()[f];
-        const int n = ft[0] == t ? ft[1] : ft[0];
+      const Vec3 origin = rows_[source_[t]].centroid;
+      for (int n : rows_[t].neighbours) {
         if (n < 0 || d_[n] == 0) continue;
-        const double dn = (centroidOf(n) - origin).norm();
+        const double dn = (rows_[n].centroid - origin).norm();
         if (dn <= bound_ && dn < d_[n]) {
           d_[n] = dn, source_[n] = source_[t];
           heap_.emplace(dn, n);
@@ -90,13 +78,11 @@ class DistanceFront {
     popped_ = heap_.empty() ? kInf : upTo;
   }
 
-  const TetMesh& mesh_;
+  const TetRows& rows_;
   double bound_, margin_ = 0, step_ = 0, popped_ = -kInf;
   std::vector<double> d_;
   std::vector<int> source_;
-  std::unique_ptr<Vec3[]> centroids_;  ///< of the tets reached (the others never touched)
-  std::vector<unsigned char> known_;
-  MinHeap heap_;
+  BucketQueue heap_;
   std::size_t steps_ = 0;
 };
 
@@ -114,17 +100,14 @@ class Grower {
         key_(std::move(key)),
         onAdd_(std::move(onAdd)),
         state_(mesh_.tetCount(), None),
-        deferredAt_(mesh_.vertexCount(), 0) {}
+        deferredAt_(mesh_.vertexCount(), 0),
+        heap_(bucketWidth(mesh_)) {}
 
   void add(int t) {
     set_.add(t);
     if (onAdd_) onAdd_(t);
-    for (int f : mesh_.tetFaces()[t]) {
-      for (int n : mesh_.faceTets()[f]) {
-        if (n < 0 || set_.contains(n) || state_[n] != None) continue;
-        queue(n);
-      }
-    }
+    for (int n : set_.neighbours(t))
+      if (n >= 0 && !set_.contains(n) && state_[n] == None) queue(n);
     // A deferred tet's contact with the set changes only when a tet sharing one of its
     // vertices joins: re-check those (deferredAt_ skips the vertices with none).
     for (int v : mesh_.tets()[t]) {
@@ -135,9 +118,8 @@ class Grower {
   }
   void queueNeighboursOfSet(const std::vector<int>& members) {
     for (int t : members)
-      for (int f : mesh_.tetFaces()[t])
-        for (int n : mesh_.faceTets()[f])
-          if (n >= 0 && !set_.contains(n) && state_[n] == None) queue(n);
+      for (int n : set_.neighbours(t))
+        if (n >= 0 && !set_.contains(n) && state_[n] == None) queue(n);
   }
   /// Runs until `done()` or no candidate is left; returns whether done() held.
   bool run(const std::function<bool()>& done, const Progress& progress) {
@@ -200,7 +182,7 @@ class Grower {
   std::function<void(int)> onAdd_;
   std::vector<unsigned char> state_;
   std::vector<int> deferredAt_;  ///< deferred non-forbidden tets around each vertex
-  MinHeap heap_;
+  BucketQueue heap_;
   std::size_t added_ = 0, forbiddenMet_ = 0;
   int blockingTet_ = -1;
   double blockingDistance_ = 0;
@@ -220,11 +202,24 @@ std::string shrink(TetSet& set, const std::vector<unsigned char>& isSeed,
     if (!isSeed[t]) order.push_back(t);
   std::sort(order.begin(), order.end(),
             [&](int a, int b) { return key[a] != key[b] ? key[a] > key[b] : a < b; });
+  // Whether a tet may leave depends only on the tets around its vertices (and on the set's
+  // size, which only shrinks, so a refusal stays one): a tet refused once is tested again only
+  // after a tet sharing a vertex with it left. The removals are those of testing every tet in
+  // every sweep, in the same order.
+  const TetMesh& mesh = set.mesh();
+  std::vector<unsigned char> stale(mesh.tetCount(), 0);  // refused, nothing changed around it
   std::size_t removed = 0;
   for (int sweep = 0; sweep < 64; ++sweep) {
     std::size_t now = 0;
     for (int t : order) {
-      if (set.contains(t) && set.canRemove(t)) set.remove(t), ++now;
+      if (stale[t] || !set.contains(t)) continue;
+      if (!set.canRemove(t)) {
+        stale[t] = 1;
+        continue;
+      }
+      set.remove(t), ++now;
+      for (int v : mesh.tets()[t])
+        for (int n : mesh.vertexTets(v)) stale[n] = 0;
     }
     progress.throwIfCancelled();
     removed += now;
@@ -239,7 +234,8 @@ std::string shrink(TetSet& set, const std::vector<unsigned char>& isSeed,
 
 std::vector<double> tetDistances(const TetMesh& mesh, std::span<const int> sources, double bound,
                                  const Progress& progress) {
-  DistanceFront front(mesh, sources, bound);
+  const TetRows rows(mesh);
+  DistanceFront front(mesh, rows, sources, bound);
   front.settleAll(progress);
   return front.release();
 }
@@ -262,15 +258,16 @@ BallRegion growBallRegion(const TetMesh& mesh, std::span<const int> seedSpan,
   // Step 1: distances to the seeds within a generous bound; beyond it the key continues with
   // the distance to the seeds' centre, so growth can always go on.
   const double bound1 = std::max(options.distance, 8 * mesh.meanEdgeLength());
-  DistanceFront d1(mesh, seeds, bound1);
+  TetSet set(mesh);
+  const TetRows& rows = set.rows();
+  DistanceFront d1(mesh, rows, seeds, bound1);
   Vec3 centre = Vec3::Zero();
-  for (int s : seeds) centre += centroid(mesh, s);
+  for (int s : seeds) centre += rows[s].centroid;
   centre /= double(seeds.size());
   auto key1 = [&](int t) {
     const double d = d1.at(t, progress);
-    return d < kInf ? d : bound1 + (centroid(mesh, t) - centre).norm();
+    return d < kInf ? d : bound1 + (rows[t].centroid - centre).norm();
   };
-  TetSet set(mesh);
   std::size_t seedsIn = 0;
   {
     Grower grower(set, forbidden, key1, [&](int t) { seedsIn += isSeed[t]; });
@@ -306,7 +303,9 @@ BallRegion growBallRegion(const TetMesh& mesh, std::span<const int> seedSpan,
   // Step 3.
   if (options.distance > 0) {
     const std::vector<int> core = set.tets();
-    const std::vector<double> d3 = tetDistances(mesh, core, options.distance, progress);
+    DistanceFront front(mesh, rows, core, options.distance);
+    front.settleAll(progress);
+    const std::vector<double> d3 = front.release();
     Grower grower(set, forbidden, [&](int t) { return d3[t]; });
     grower.queueNeighboursOfSet(core);
     grower.run([] { return false; }, progress);

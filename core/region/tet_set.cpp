@@ -5,11 +5,14 @@ namespace {
 
 /// Local vertices of the tet's edges in TetMesh::tetEdges() order (01, 02, 03, 12, 13, 23).
 constexpr int kEdgeEnds[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+/// Position in that order of the edge joining local vertices i and j.
+constexpr int kEdgeOf[4][4] = {{-1, 0, 1, 2}, {0, -1, 3, 4}, {1, 3, -1, 5}, {2, 4, 5, -1}};
 
 }  // namespace
 
 TetSet::TetSet(const TetMesh& mesh)
     : mesh_(mesh),
+      rows_(mesh),
       in_(mesh.tetCount(), 0),
       vertexCount_(mesh.vertexCount(), 0),
       edgeCount_(mesh.edges().size(), 0),
@@ -48,42 +51,50 @@ int TetSet::tetsAround(int edge) const {
 
 int TetSet::sharedFaces(int tet) const {
   int n = 0;
-  for (int f : mesh_.tetFaces()[tet]) {
-    const auto& ft = mesh_.faceTets()[f];
-    const int other = ft[0] == tet ? ft[1] : ft[0];
-    n += other >= 0 && in_[other] != 0;
-  }
+  for (int other : neighbours(tet)) n += other >= 0 && in_[other] != 0;
   return n;
 }
+
+namespace {
+
+/// Whether the part of ∂t made of the faces `face[i]` (opposite local vertex i; `count` of
+/// them) is a disk that holds every vertex and edge of t found held elsewhere. Three faces
+/// hold every vertex and edge; one face (opposite i) all but vertex i and its edges; two
+/// (opposite i and j) all but edge ij. So one count decides: `vertexHeld(i)` or
+/// `edgeHeld(local edge)` (an edge at vertex i held elsewhere means a tet holding i).
+template <class VertexHeld, class EdgeHeld>
+bool faceContactIsDisk(const bool face[4], int count, VertexHeld&& vertexHeld,
+                       EdgeHeld&& edgeHeld) {
+  if (count == 3) return true;
+  if (count == 1) {
+    int i = 0;
+    while (!face[i]) ++i;
+    return !vertexHeld(i);
+  }
+  if (count == 2) {
+    int i = 0;
+    while (!face[i]) ++i;
+    int j = i + 1;
+    while (!face[j]) ++j;
+    return !edgeHeld(kEdgeOf[i][j]);
+  }
+  return false;  // no face, or all four (a closed sphere)
+}
+
+}  // namespace
 
 // `self` is 1 when the tet itself is counted in the occupancy (removal), 0 otherwise.
 bool TetSet::contactIsDisk(int tet, int self) const {
   bool faceShared[4];  // face opposite local vertex i
   int shared = 0;
   for (int i = 0; i < 4; ++i) {
-    const auto& ft = mesh_.faceTets()[mesh_.tetFaces()[tet][i]];
-    const int other = ft[0] == tet ? ft[1] : ft[0];
+    const int other = neighbours(tet)[i];
     faceShared[i] = other >= 0 && in_[other] != 0;
     shared += faceShared[i];
   }
-  if (shared == 0 || shared == 4) return false;
-  const auto& verts = mesh_.tets()[tet];
-  for (int i = 0; i < 4; ++i) {
-    if (vertexCount_[verts[i]] - self == 0) continue;
-    // The faces holding vertex i are those opposite the other three vertices.
-    bool covered = false;
-    for (int j = 0; j < 4; ++j) covered = covered || (j != i && faceShared[j]);
-    if (!covered) return false;
-  }
-  for (int e = 0; e < 6; ++e) {
-    if (edgeCount_[mesh_.tetEdges()[tet][e]] - self == 0) continue;
-    // The faces holding edge (a, b) are those opposite its two other vertices.
-    const int a = kEdgeEnds[e][0], b = kEdgeEnds[e][1];
-    bool covered = false;
-    for (int j = 0; j < 4; ++j) covered = covered || (j != a && j != b && faceShared[j]);
-    if (!covered) return false;
-  }
-  return true;
+  return faceContactIsDisk(
+      faceShared, shared, [&](int i) { return vertexCount_[mesh_.tets()[tet][i]] - self != 0; },
+      [&](int e) { return edgeCount_[mesh_.tetEdges()[tet][e]] - self != 0; });
 }
 
 // For a member tet: its contact with everything outside the set (other tets not in the set,
@@ -92,31 +103,20 @@ bool TetSet::complementContactIsDisk(int tet) const {
   bool faceOut[4];
   int out = 0;
   for (int i = 0; i < 4; ++i) {
-    const auto& ft = mesh_.faceTets()[mesh_.tetFaces()[tet][i]];
-    const int other = ft[0] == tet ? ft[1] : ft[0];
+    const int other = neighbours(tet)[i];
     faceOut[i] = other < 0 || in_[other] == 0;
     out += faceOut[i];
   }
-  if (out == 0 || out == 4) return false;
-  const auto& verts = mesh_.tets()[tet];
-  for (int i = 0; i < 4; ++i) {
-    const int v = verts[i];
-    const bool touched =
-        mesh_.isBoundaryVertex(v) || int(mesh_.vertexTets(v).size()) > vertexCount_[v];
-    if (!touched) continue;
-    bool covered = false;
-    for (int j = 0; j < 4; ++j) covered = covered || (j != i && faceOut[j]);
-    if (!covered) return false;
-  }
-  for (int e = 0; e < 6; ++e) {
-    const int id = mesh_.tetEdges()[tet][e];
-    if (!edgeOnSurface_[id] && tetsAround(id) == edgeCount_[id]) continue;
-    const int a = kEdgeEnds[e][0], b = kEdgeEnds[e][1];
-    bool covered = false;
-    for (int j = 0; j < 4; ++j) covered = covered || (j != a && j != b && faceOut[j]);
-    if (!covered) return false;
-  }
-  return true;
+  return faceContactIsDisk(
+      faceOut, out,
+      [&](int i) {
+        const int v = mesh_.tets()[tet][i];
+        return mesh_.isBoundaryVertex(v) || int(mesh_.vertexTets(v).size()) > vertexCount_[v];
+      },
+      [&](int e) {
+        const int id = mesh_.tetEdges()[tet][e];
+        return edgeOnSurface_[id] || tetsAround(id) != edgeCount_[id];
+      });
 }
 
 bool TetSet::canAdd(int tet) const {

@@ -12,9 +12,11 @@
 // or three faces of t are shared with tets of S, and every edge and vertex of t that some tet of
 // S holds lies on one of those faces. Edge and vertex occupancy counts make the test O(1).
 // Memory: a few bytes per tet, edge and vertex of the mesh.
+#include <array>
 #include <cstddef>
 #include <vector>
 
+#include "core/region/tet_rows.h"
 #include "core/tet_mesh.h"
 
 namespace tfd::core {
@@ -37,12 +39,17 @@ class TetSet {
   int sharedFaces(int tet) const;
   /// The member tets, ascending. O(mesh tets).
   std::vector<int> tets() const;
+  /// The tet across the face opposite local vertex i of `tet` (−1 on the domain surface).
+  const std::array<int, 4>& neighbours(int tet) const { return rows_[tet].neighbours; }
+  /// Neighbours and centroids of the tets reached so far (shared with the distance fronts).
+  const TetRows& rows() const { return rows_; }
 
  private:
   bool contactIsDisk(int tet, int self) const;
   bool complementContactIsDisk(int tet) const;
 
   const TetMesh& mesh_;
+  TetRows rows_;
   std::vector<unsigned char> in_;
   std::vector<int> vertexCount_, edgeCount_;
   int tetsAround(int edge) const;

@@ -247,3 +247,88 @@ TEST(BallRegion, ForbiddenTetsLeftOutAreCountedOnce) {
 
 }  // namespace
 }  // namespace tfd::core
+
+namespace tfd::core {
+namespace {
+
+/// The simple-tet test spelled out in full (every vertex and edge of t held elsewhere must lie
+/// on a face of the contact), against which TetSet's one-count test is checked.
+bool fullContactIsDisk(const TetMesh& m, int t, const std::vector<char>& faceIn,
+                       const std::function<bool(int)>& vertexHeld,
+                       const std::function<bool(int, int)>& edgeHeld) {
+  int count = 0;
+  for (int i = 0; i < 4; ++i) count += faceIn[i];
+  if (count == 0 || count == 4) return false;
+  for (int i = 0; i < 4; ++i) {
+    bool covered = false;
+    for (int j = 0; j < 4; ++j) covered = covered || (j != i && faceIn[j]);
+    if (vertexHeld(m.tets()[t][i]) && !covered) return false;
+    for (int k = i + 1; k < 4; ++k) {
+      bool edgeCovered = false;
+      for (int j = 0; j < 4; ++j) edgeCovered = edgeCovered || (j != i && j != k && faceIn[j]);
+      if (edgeHeld(i, k) && !edgeCovered) return false;
+    }
+  }
+  return true;
+}
+
+TEST(TetSet, OneCountTestEqualsTheFullVertexAndEdgeTest) {
+  const auto mesh = testing::jitteredBox(6, 0.15);
+  const TetMesh& m = *mesh;
+  std::mt19937 rng(5);
+  int adds = 0, removes = 0;
+  for (int run = 0; run < 40; ++run) {
+    TetSet set(m);
+    std::vector<char> in(m.tetCount(), 0);
+    const double density = 0.1 + 0.8 * (run % 8) / 8.0;
+    for (int t = 0; t < int(m.tetCount()); ++t)
+      if (std::uniform_real_distribution<double>(0, 1)(rng) < density) set.add(t), in[t] = 1;
+    auto around = [&](int a, int b, bool wantIn, int skip) {  // tets around vertex/edge
+      for (int n : m.vertexTets(a)) {
+        if (n == skip) continue;
+        const auto& v = m.tets()[n];
+        if (b >= 0 && std::find(v.begin(), v.end(), b) == v.end()) continue;
+        if (bool(in[n]) == wantIn) return true;
+      }
+      return false;
+    };
+    for (int t = 0; t < int(m.tetCount()); ++t) {
+      std::vector<char> faceIn(4), faceOut(4);
+      for (int i = 0; i < 4; ++i) {
+        const auto& ft = m.faceTets()[m.tetFaces()[t][i]];
+        const int other = ft[0] == t ? ft[1] : ft[0];
+        faceIn[i] = other >= 0 && in[other];
+        faceOut[i] = other < 0 || !in[other];
+      }
+      const auto& v = m.tets()[t];
+      const bool inner = fullContactIsDisk(
+          m, t, faceIn, [&](int x) { return around(x, -1, true, t); },
+          [&](int i, int k) { return around(v[i], v[k], true, t); });
+      if (!in[t]) {
+        ASSERT_EQ(set.canAdd(t), inner) << "run " << run << " tet " << t;
+        ++adds;
+        continue;
+      }
+      // The complement: tets outside the set, or the outside of the domain.
+      const bool outer = fullContactIsDisk(
+          m, t, faceOut, [&](int x) { return m.isBoundaryVertex(x) || around(x, -1, false, t); },
+          [&](int i, int k) {
+            bool surface = false;
+            for (int f : m.boundaryFaces()) {
+              const auto& fv = m.faces()[f];
+              surface = surface || (std::find(fv.begin(), fv.end(), v[i]) != fv.end() &&
+                                    std::find(fv.begin(), fv.end(), v[k]) != fv.end());
+            }
+            return surface || around(v[i], v[k], false, t);
+          });
+      ASSERT_EQ(set.canRemove(t), set.size() > 1 && inner && outer)
+          << "run " << run << " tet " << t;
+      ++removes;
+    }
+  }
+  EXPECT_GT(adds, 1000);
+  EXPECT_GT(removes, 1000);
+}
+
+}  // namespace
+}  // namespace tfd::core
