@@ -46,13 +46,15 @@ struct FaceRecord {
   bool operator<(const FaceRecord& o) const { return key != o.key ? key < o.key : slot < o.slot; }
 };
 
-/// The records whose lowest vertex is `a`, sorted (by key, then by slot: lower tet first).
-void collect(const std::vector<TetMesh::Tet>& tets, std::span<const int> incident, int a,
+/// The records whose lowest vertex is `a`, sorted (by key, then by slot: lower tet first);
+/// `incident` are a's tets (ids ascending) and `tets` their vertices.
+void collect(std::span<const TetMesh::Tet> tets, std::span<const int> incident, int a,
              std::vector<EdgeRecord>& edges, std::vector<FaceRecord>& faces) {
   edges.clear();
   faces.clear();
-  for (int t : incident) {
-    const auto& tet = tets[t];
+  for (std::size_t k = 0; k < incident.size(); ++k) {
+    const int t = incident[k];
+    const auto& tet = tets[k];
     int i = 0;
     while (tet[i] != a) ++i;
     for (int j = 0; j < 4; ++j) {
@@ -61,9 +63,9 @@ void collect(const std::vector<TetMesh::Tet>& tets, std::span<const int> inciden
         edges.push_back(std::uint64_t(tet[j]) << 32 | std::uint32_t(t * 6 + edgeIndex(i, j)));
       // The face opposite j contains a; keep it when a is its lowest vertex.
       int b = -1, c = -1;
-      for (int k : kFace[j]) {
-        if (k == i) continue;
-        (b < 0 ? b : c) = tet[k];
+      for (int m : kFace[j]) {
+        if (m == i) continue;
+        (b < 0 ? b : c) = tet[m];
       }
       if (b < a || c < a) continue;
       if (b > c) std::swap(b, c);
@@ -158,16 +160,25 @@ bool TetMesh::buildEdgesAndFaces(const Progress& progress) {
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunkCount, 1), [&](const auto& r) {
     std::vector<EdgeRecord> edges;
     std::vector<FaceRecord> faces;
+    std::vector<Tet> local;
     for (std::size_t c = r.begin(); c != r.end(); ++c) {
       if (progress.cancelled()) return;
       Chunk& out = chunks[c];
       const std::size_t begin = c * kVertexGrain, end = std::min(nv, begin + kVertexGrain);
+      // The chunk's incident tets gathered first (independent loads the processor overlaps;
+      // TetGen's tet ids have no spatial order), so the collection below reads them in order.
+      const int first = vertexTetStart_[begin];
+      local.resize(std::size_t(vertexTetStart_[end] - first));
+      for (std::size_t k = 0; k < local.size(); ++k) local[k] = tets_[vertexTetIds_[first + k]];
       out.edges.reserve((end - begin) * 8);
       out.faces.reserve((end - begin) * 14);
       out.faceTets.reserve((end - begin) * 14);
       for (std::size_t a = begin; a != end; ++a) {
         const int va = static_cast<int>(a);
-        collect(tets_, vertexTets(va), va, edges, faces);
+        const std::span<const int> incident = vertexTets(va);
+        collect(std::span<const Tet>(local).subspan(std::size_t(vertexTetStart_[a] - first),
+                                                    incident.size()),
+                incident, va, edges, faces);
         int id = static_cast<int>(out.edges.size()) - 1;
         for (std::size_t i = 0; i < edges.size(); ++i) {
           if (i == 0 || (edges[i - 1] >> 32) != (edges[i] >> 32))
