@@ -41,6 +41,7 @@ std::string PropagateReport::summary() const {
   if (secondIterations > 0) out << " + " << secondIterations;
   out << " iterations (residual " << std::max(firstResidual, secondResidual) << "); "
       << totalSeconds << " s";
+  if (reusedSetups > 0) out << " (" << reusedSetups << " solver set-up(s) reused)";
   return out.str();
 }
 
@@ -60,6 +61,7 @@ PropagateResult propagate(std::shared_ptr<const TetMesh> mesh, const ConstraintS
   const std::size_t n = mesh->vertexCount();
   SolverOptions solverOptions;
   solverOptions.tolerance = options.tolerance;
+  solverOptions.reuseSetup = options.reuseSetups;
 
   // (1) Design elements.
   progress.report(0.0, "design elements");
@@ -102,6 +104,7 @@ PropagateResult propagate(std::shared_ptr<const TetMesh> mesh, const ConstraintS
     if (report.freeVertices > 0) {
       progress.report(0.1, "harmonic solve");
       firstSolver = std::make_unique<HarmonicSolver>(mesh, fixed, stiffness, solverOptions);
+      report.reusedSetups += firstSolver->setupReused();
       report.firstSetupSeconds = clock.lap();
       SolveResult first = firstSolver->solve(std::move(values), progress);
       values = std::move(first.values);
@@ -143,6 +146,7 @@ PropagateResult propagate(std::shared_ptr<const TetMesh> mesh, const ConstraintS
       secondOptions.lambdaMaxBound = firstSolver->preconditioner().levels()[0].lambdaMax;
     firstSolver.reset();
     const HarmonicSolver solver(mesh, fixed, stiffness, secondOptions);
+    report.reusedSetups += solver.setupReused();
     report.secondSetupSeconds = clock.lap();
     SolveResult second = solver.solve(std::move(values), progress);
     values = std::move(second.values);

@@ -27,6 +27,9 @@ struct PropagateOptions {
   bool curvatureBoundary = false;  ///< boundary values from the surface curvature tensor
   double normalEigenvalue = 0;     ///< curvatureBoundary: eigenvalue along the normal
   double tolerance = 1e-8;         ///< relative residual of each solve
+  /// Keep the solvers' set-ups with the mesh and reuse them when a later propagation solves
+  /// the same matrices (same mesh object, same fixed vertices): SolverOptions::reuseSetup.
+  bool reuseSetups = true;
 };
 
 struct PropagateReport {
@@ -35,6 +38,9 @@ struct PropagateReport {
   std::size_t boundaryVertices = 0;  ///< boundary vertices fixed in the last solve (0 if none)
   std::size_t freeVertices = 0;      ///< free vertices of the last solve
   int firstIterations = 0, secondIterations = 0;
+  /// Solver set-ups taken from the mesh's cache (an earlier propagation of the same mesh with
+  /// the same fixed vertices; HarmonicSolver, SolverOptions::reuseSetup): 0, 1 or 2.
+  int reusedSetups = 0;
   double firstResidual = 0, secondResidual = 0;
   // Wall-clock seconds per stage.
   double constraintSeconds = 0, assemblySeconds = 0, firstSetupSeconds = 0, firstSolveSeconds = 0,

@@ -396,6 +396,20 @@ AmgPreconditioner& AmgPreconditioner::operator=(AmgPreconditioner&&) noexcept = 
 
 const std::vector<AmgLevelInfo>& AmgPreconditioner::levels() const { return impl_->info; }
 
+namespace {
+template <class Real>
+std::size_t hierarchyBytes(const Hierarchy<Real>& h) {
+  std::size_t total = 0;
+  for (const auto& l : h.levels)
+    total += l.ownedA.bytes() + l.p.bytes() + l.r.bytes() + l.invDiag.size() * sizeof(Real);
+  return total + static_cast<std::size_t>(h.coarseRows) * h.coarseRows * sizeof(double);
+}
+}  // namespace
+
+std::size_t AmgPreconditioner::bytes() const {
+  return hierarchyBytes(impl_->single) + hierarchyBytes(impl_->twice);
+}
+
 double AmgPreconditioner::operatorComplexity() const {
   double total = 0;
   for (const auto& l : impl_->info) total += static_cast<double>(l.nonZeros);

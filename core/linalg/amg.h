@@ -61,6 +61,8 @@ class AmgPreconditioner {
   const std::vector<AmgLevelInfo>& levels() const;
   /// Σ nnz(A_l) / nnz(A_0).
   double operatorComplexity() const;
+  /// Memory held by the hierarchy (matrices, prolongators, diagonals, dense factor), about.
+  std::size_t bytes() const;
 
  private:
   struct Impl;

@@ -3,11 +3,15 @@
 #include <tbb/parallel_sort.h>
 
 #include <algorithm>
+#include <atomic>
+#include <bit>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <numeric>
 #include <string>
 
+#include "core/derived_cache.h"
 #include "core/error.h"
 #include "core/linalg/amg.h"
 #include "core/linalg/block_cg.h"
@@ -16,17 +20,33 @@ namespace tfd::core {
 
 using linalg::CsrMatrix;
 
-struct HarmonicSolver::Impl {
-  std::shared_ptr<const TetMesh> mesh;
-  SolverOptions options;
+/// What a solve needs besides the values: a function of the mesh, the free set, the matrix
+/// rows and the preconditioner options only, so it can be shared by later solvers of the same
+/// system (kept for the mesh in core::derivedCache(); it holds no pointer to the mesh, so the
+/// cache never keeps a mesh alive).
+struct HarmonicSetup {
   std::vector<int> freeVertices;  ///< ascending global ids
   std::vector<int> order;         ///< global vertex of each internal row (a locality order)
   CsrMatrix<double> a;            ///< free × free block
   CsrMatrix<double> coupling;     ///< free × fixed block, columns are global vertex ids
-  std::unique_ptr<linalg::AmgPreconditioner> amg;
+  std::unique_ptr<linalg::AmgPreconditioner> amg;  ///< may reference `a`: never moved
+  bool singlePrecision = true;
+  double lambdaMaxBound = 0;
+  bool ownRows = false;  ///< rows assembled from the mesh by the solver (none were given)
 
-  void init(const StiffnessRows* given);
-  void checkComponents() const;
+  std::size_t bytes() const {
+    return (freeVertices.size() + order.size()) * sizeof(int) + a.bytes() + coupling.bytes() +
+           amg->bytes();
+  }
+};
+
+struct HarmonicSolver::Impl {
+  std::shared_ptr<const TetMesh> mesh;
+  SolverOptions options;
+  std::shared_ptr<const HarmonicSetup> setup;
+  bool reused = false;
+
+  void init(std::vector<int> freeVertices, const StiffnessRows* given);
   template <int W, class Get, class Set>
   int solveBlock(Get&& get, Set&& set, const Progress& progress, double* residual) const;
 };
@@ -99,21 +119,62 @@ std::vector<int> localityOrder(const TetMesh& mesh, const std::vector<int>& free
   return order;
 }
 
-}  // namespace
+void checkComponents(const HarmonicSetup& s) {
+  const CsrMatrix<double>& a = s.a;
+  const CsrMatrix<double>& coupling = s.coupling;
+  const std::vector<int>& order = s.order;
+  // Union-find over the free-free pattern (which is the mesh graph: zero entries are kept).
+  const int n = a.rows;
+  std::vector<int> parent(n);
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](int x) {
+    while (parent[x] != x) {
+      parent[x] = parent[parent[x]];
+      x = parent[x];
+    }
+    return x;
+  };
+  for (int i = 0; i < n; ++i)
+    for (int m = a.start[i]; m < a.start[i + 1]; ++m) {
+      const int j = a.index[m];
+      if (j <= i) continue;
+      const int ri = find(i), rj = find(j);
+      if (ri != rj) parent[std::max(ri, rj)] = std::min(ri, rj);
+    }
+  std::vector<unsigned char> anchored(n, 0);
+  for (int i = 0; i < n; ++i)
+    if (coupling.start[i + 1] > coupling.start[i]) anchored[find(i)] = 1;
+  std::vector<int> size(n, 0);
+  for (int i = 0; i < n; ++i) ++size[find(i)];
+  int badRoot = -1, badComponents = 0;
+  for (int i = 0; i < n; ++i)
+    if (parent[i] == i && !anchored[i]) {
+      if (badRoot < 0) badRoot = i;
+      ++badComponents;
+    }
+  if (badRoot >= 0)
+    throw Error("harmonic solve: " + std::to_string(badComponents) +
+                " connected part(s) of the mesh have no fixed vertex (e.g. the part with " +
+                std::to_string(size[badRoot]) + " vertices containing vertex " +
+                std::to_string(order[badRoot]) + "); add a constraint there or fix a vertex of it");
+}
 
-void HarmonicSolver::Impl::init(const StiffnessRows* given) {
-  const std::size_t n = mesh->vertexCount();
+/// Builds `s` (its free set and options given): the free and fixed blocks of the rows
+/// (`given`, or assembled from the mesh), the locality order and the multigrid hierarchy.
+void buildSetup(HarmonicSetup& s, const TetMesh& mesh, const StiffnessRows* given) {
+  const std::size_t n = mesh.vertexCount();
+  const std::vector<int>& freeVertices = s.freeVertices;
   const int freeCount = static_cast<int>(freeVertices.size());
-  if (freeCount == 0) throw Error("harmonic solve: every vertex is fixed, nothing to solve");
+  std::vector<int>& order = s.order;
+  CsrMatrix<double>& a = s.a;
+  CsrMatrix<double>& coupling = s.coupling;
   StiffnessRows own;
   const StiffnessRows* rows = given;
   if (rows == nullptr) {
-    own = assembleStiffnessRows(*mesh, freeVertices);
+    own = assembleStiffnessRows(mesh, freeVertices);
     rows = &own;
-  } else if (rows->matrix.cols != static_cast<int>(n)) {
-    throw Error("harmonic solve: the stiffness rows belong to another mesh");
   }
-  order = localityOrder(*mesh, freeVertices);
+  order = localityOrder(mesh, freeVertices);
   // Row of the source matrix for each internal row.
   std::vector<int> sourceRow(freeCount);
   const bool full = rows->vertices.size() == n;
@@ -203,55 +264,114 @@ void HarmonicSolver::Impl::init(const StiffnessRows* given) {
         }
       },
       1);
-  checkComponents();
+  checkComponents(s);
   linalg::AmgOptions amgOptions;
-  amgOptions.singlePrecision = options.singlePrecisionPreconditioner;
-  amgOptions.fineLambdaMax = options.lambdaMaxBound;
-  amg = std::make_unique<linalg::AmgPreconditioner>(a, amgOptions);
+  amgOptions.singlePrecision = s.singlePrecision;
+  amgOptions.fineLambdaMax = s.lambdaMaxBound;
+  s.amg = std::make_unique<linalg::AmgPreconditioner>(a, amgOptions);
 }
 
-void HarmonicSolver::Impl::checkComponents() const {
-  // Union-find over the free-free pattern (which is the mesh graph: zero entries are kept).
-  const int n = a.rows;
-  std::vector<int> parent(n);
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int x) {
-    while (parent[x] != x) {
-      parent[x] = parent[parent[x]];
-      x = parent[x];
+/// Whether `rows` restricted to the set-up's free vertices are exactly its blocks `a` and
+/// `coupling` (same entries in the same order, values bitwise equal): then a set-up built
+/// from `rows` would be identical to `s`.
+bool sameRows(const HarmonicSetup& s, const StiffnessRows& rows, std::size_t vertexCount) {
+  const CsrMatrix<double>& k = rows.matrix;
+  if (k.cols != static_cast<int>(vertexCount)) return false;
+  const bool full = rows.vertices.size() == vertexCount;
+  const FreeIndex local(s.freeVertices, s.order, vertexCount);
+  std::atomic<bool> same = true;
+  linalg::parallelRanges(s.order.size(), [&](std::size_t b, std::size_t e) {
+    auto bits = [](double x) { return std::bit_cast<std::uint64_t>(x); };
+    for (std::size_t i = b; i < e && same.load(std::memory_order_relaxed); ++i) {
+      const int v = s.order[i];
+      int row = v;
+      if (!full) {
+        const auto it = std::lower_bound(rows.vertices.begin(), rows.vertices.end(), v);
+        if (it == rows.vertices.end() || *it != v) {
+          same = false;
+          return;
+        }
+        row = static_cast<int>(it - rows.vertices.begin());
+      }
+      int pa = s.a.start[i], pc = s.coupling.start[i];
+      bool ok = true;
+      for (int m = k.start[row]; m < k.start[row + 1] && ok; ++m) {
+        const int j = local(k.index[m]);
+        if (j >= 0) {
+          ok = pa < s.a.start[i + 1] && s.a.index[pa] == j &&
+               bits(s.a.value[pa]) == bits(k.value[m]);
+          ++pa;
+        } else {
+          ok = pc < s.coupling.start[i + 1] && s.coupling.index[pc] == k.index[m] &&
+               bits(s.coupling.value[pc]) == bits(k.value[m]);
+          ++pc;
+        }
+      }
+      if (!ok || pa != s.a.start[i + 1] || pc != s.coupling.start[i + 1]) same = false;
     }
-    return x;
+  });
+  return same;
+}
+
+/// Lookup key of a set-up: the free set and the preconditioner options (the matrix is
+/// compared exactly on a hit, see sameRows()).
+std::uint64_t setupKey(const std::vector<int>& free, const SolverOptions& options) {
+  std::uint64_t h = 0x9e3779b97f4a7c15ULL ^ free.size();
+  auto mix = [&h](std::uint64_t x) {
+    h ^= x + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
+    h *= 0xff51afd7ed558ccdULL;
   };
-  for (int i = 0; i < n; ++i)
-    for (int m = a.start[i]; m < a.start[i + 1]; ++m) {
-      const int j = a.index[m];
-      if (j <= i) continue;
-      const int ri = find(i), rj = find(j);
-      if (ri != rj) parent[std::max(ri, rj)] = std::min(ri, rj);
+  for (int v : free) mix(static_cast<std::uint32_t>(v));
+  mix(options.singlePrecisionPreconditioner);
+  mix(std::bit_cast<std::uint64_t>(options.lambdaMaxBound));
+  return h;
+}
+
+}  // namespace
+
+void HarmonicSolver::Impl::init(std::vector<int> freeVertices, const StiffnessRows* given) {
+  const std::size_t n = mesh->vertexCount();
+  if (freeVertices.empty()) throw Error("harmonic solve: every vertex is fixed, nothing to solve");
+  if (given && given->matrix.cols != static_cast<int>(n))
+    throw Error("harmonic solve: the stiffness rows belong to another mesh");
+  const std::uint64_t key = setupKey(freeVertices, options);
+  if (options.reuseSetup) {
+    // A set-up kept by an earlier solver of the same mesh is used only when it is exactly the
+    // one this solver would build: same free set and options, and the same matrix rows
+    // (compared entry by entry; rows the solver assembles itself are a function of the mesh
+    // and the free set).
+    const std::function<bool(const HarmonicSetup&)> fits = [&](const HarmonicSetup& s) {
+      if (s.freeVertices != freeVertices ||
+          s.singlePrecision != options.singlePrecisionPreconditioner ||
+          std::bit_cast<std::uint64_t>(s.lambdaMaxBound) !=
+              std::bit_cast<std::uint64_t>(options.lambdaMaxBound))
+        return false;
+      return given == nullptr ? s.ownRows : sameRows(s, *given, n);
+    };
+    if (auto found = derivedCache().find<HarmonicSetup>(mesh, key, fits)) {
+      setup = std::move(found);
+      reused = true;
+      return;
     }
-  std::vector<unsigned char> anchored(n, 0);
-  for (int i = 0; i < n; ++i)
-    if (coupling.start[i + 1] > coupling.start[i]) anchored[find(i)] = 1;
-  std::vector<int> size(n, 0);
-  for (int i = 0; i < n; ++i) ++size[find(i)];
-  int badRoot = -1, badComponents = 0;
-  for (int i = 0; i < n; ++i)
-    if (parent[i] == i && !anchored[i]) {
-      if (badRoot < 0) badRoot = i;
-      ++badComponents;
-    }
-  if (badRoot >= 0)
-    throw Error("harmonic solve: " + std::to_string(badComponents) +
-                " connected part(s) of the mesh have no fixed vertex (e.g. the part with " +
-                std::to_string(size[badRoot]) + " vertices containing vertex " +
-                std::to_string(order[badRoot]) + "); add a constraint there or fix a vertex of it");
+  }
+  auto built = std::make_shared<HarmonicSetup>();
+  built->freeVertices = std::move(freeVertices);
+  built->singlePrecision = options.singlePrecisionPreconditioner;
+  built->lambdaMaxBound = options.lambdaMaxBound;
+  built->ownRows = given == nullptr;
+  buildSetup(*built, *mesh, given);
+  setup = built;
+  if (options.reuseSetup) derivedCache().store<HarmonicSetup>(mesh, key, setup, built->bytes());
 }
 
 template <int W, class Get, class Set>
 int HarmonicSolver::Impl::solveBlock(Get&& get, Set&& set, const Progress& progress,
                                      double* residual) const {
   constexpr int S = W;  // block vector stride
-  const std::size_t nf = freeVertices.size();
+  const std::vector<int>& order = setup->order;
+  const CsrMatrix<double>& a = setup->a;
+  const CsrMatrix<double>& coupling = setup->coupling;
+  const std::size_t nf = order.size();
   std::vector<double> b(nf * S, 0.0), x(nf * S, 0.0);
   linalg::parallelRanges(nf, [&](std::size_t bg, std::size_t e) {
     for (std::size_t i = bg; i < e; ++i) {
@@ -289,7 +409,8 @@ int HarmonicSolver::Impl::solveBlock(Get&& get, Set&& set, const Progress& progr
   linalg::CgOptions cg;
   cg.tolerance = options.tolerance;
   cg.maxIterations = options.maxIterations;
-  const linalg::CgResult result = linalg::blockPcg<S>(a, b.data(), x.data(), *amg, cg, progress);
+  const linalg::CgResult result =
+      linalg::blockPcg<S>(a, b.data(), x.data(), *setup->amg, cg, progress);
   linalg::parallelRanges(nf, [&](std::size_t bg, std::size_t e) {
     for (std::size_t i = bg; i < e; ++i) set(order[i], x.data() + i * S);
   });
@@ -317,8 +438,7 @@ HarmonicSolver::HarmonicSolver(std::shared_ptr<const TetMesh> mesh,
   if (!mesh) throw Error("harmonic solve: no mesh");
   impl_->mesh = std::move(mesh);
   impl_->options = options;
-  impl_->freeVertices = freeFromMask(*impl_->mesh, fixed);
-  impl_->init(nullptr);
+  impl_->init(freeFromMask(*impl_->mesh, fixed), nullptr);
 }
 
 HarmonicSolver::HarmonicSolver(std::shared_ptr<const TetMesh> mesh,
@@ -328,8 +448,7 @@ HarmonicSolver::HarmonicSolver(std::shared_ptr<const TetMesh> mesh,
   if (!mesh) throw Error("harmonic solve: no mesh");
   impl_->mesh = std::move(mesh);
   impl_->options = options;
-  impl_->freeVertices = freeFromMask(*impl_->mesh, fixed);
-  impl_->init(&stiffness);
+  impl_->init(freeFromMask(*impl_->mesh, fixed), &stiffness);
 }
 
 HarmonicSolver HarmonicSolver::forRegion(std::shared_ptr<const TetMesh> mesh,
@@ -346,8 +465,7 @@ HarmonicSolver HarmonicSolver::forRegion(std::shared_ptr<const TetMesh> mesh,
   HarmonicSolver solver;
   solver.impl_->mesh = std::move(mesh);
   solver.impl_->options = options;
-  solver.impl_->freeVertices = std::move(freeVertices);
-  solver.impl_->init(nullptr);
+  solver.impl_->init(std::move(freeVertices), nullptr);
   return solver;
 }
 
@@ -405,8 +523,11 @@ int HarmonicSolver::solveColumns(std::span<double> values, int width, const Prog
 }
 
 const TetMesh& HarmonicSolver::mesh() const { return *impl_->mesh; }
-std::size_t HarmonicSolver::freeCount() const { return impl_->freeVertices.size(); }
-const std::vector<int>& HarmonicSolver::freeVertices() const { return impl_->freeVertices; }
-const linalg::AmgPreconditioner& HarmonicSolver::preconditioner() const { return *impl_->amg; }
+std::size_t HarmonicSolver::freeCount() const { return impl_->setup->freeVertices.size(); }
+const std::vector<int>& HarmonicSolver::freeVertices() const { return impl_->setup->freeVertices; }
+const linalg::AmgPreconditioner& HarmonicSolver::preconditioner() const {
+  return *impl_->setup->amg;
+}
+bool HarmonicSolver::setupReused() const { return impl_->reused; }
 
 }  // namespace tfd::core

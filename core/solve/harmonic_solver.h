@@ -29,6 +29,12 @@ struct SolverOptions {
   /// whose free vertices are a subset of another's may pass the other's
   /// preconditioner().levels()[0].lambdaMax. 0 = estimate it.
   double lambdaMaxBound = 0;
+  /// Keep the set-up (blocks, locality order, multigrid hierarchy) for the mesh in
+  /// core::derivedCache() and take one kept there by an earlier solver when it is exactly the
+  /// one this solver would build: same free vertices, same preconditioner options and the
+  /// same matrix rows (compared entry by entry). A re-cook after a constraint value change
+  /// then skips the set-up; the results are bitwise those of a fresh set-up.
+  bool reuseSetup = true;
 };
 
 struct SolveResult {
@@ -80,6 +86,8 @@ class HarmonicSolver {
   std::size_t freeCount() const;
   const std::vector<int>& freeVertices() const;  ///< ascending
   const linalg::AmgPreconditioner& preconditioner() const;
+  /// Whether the set-up was taken from the mesh's cache (SolverOptions::reuseSetup).
+  bool setupReused() const;
 
  private:
   HarmonicSolver();

@@ -168,9 +168,11 @@ TEST(Propagate, BitwiseEqualForOneAndTwoThreads) {
   p.field = makeDegenerateLinearization(Vec3(2.2, 0.0, 0.0), Mat3::Identity(),
                                         DegenerateType::Planar, DegeneratePattern::Trisector);
   set.points = {p};
+  PropagateOptions o;
+  o.reuseSetups = false;  // each run builds its own set-ups
   auto run = [&](int threads) {
     tbb::global_control c(tbb::global_control::max_allowed_parallelism, threads);
-    return propagate(mesh, set);
+    return propagate(mesh, set, o);
   };
   const PropagateResult one = run(1), two = run(2);
   ASSERT_EQ(one.field.values().size(), two.field.values().size());
