@@ -37,6 +37,9 @@ std::vector<double> arcDistances(const DegenerateCurve& c, const CurvePick& pick
   return d;
 }
 
+/// Regrowths of the region around sign conflicts per segment length (as for removal).
+constexpr int kConflictRegrowths = 8;
+
 /// Segment lengths tried after the asked one, as factors of it (reconnectCurves).
 constexpr double kSegmentFactors[] = {0.6, 1.5};
 
@@ -128,6 +131,13 @@ Setup setUp(const TetMesh& mesh, const DegenerateCurves& all, const ReconnectCur
                              editNumber(0.5 * segmentLength) + ") and an edge length: move " +
                              "the pick or shorten segment_length");
     }
+    // A loop must keep a part outside the region, so that the segments have ends: some point
+    // beyond the segment and its margin (forbidden below).
+    if (c.closed && *std::max_element(d.begin(), d.end()) <= 0.5 * segmentLength + 3 * h)
+      throw NoValidSegment("picks: the loop " + describeCurve(c) + " (length " +
+                           editNumber(c.length()) + ") is too short for segments of length " +
+                           editNumber(segmentLength) + " and a margin of three edge lengths " +
+                           "outside them (no valid segment: shorten segment_length)");
     for (std::size_t i = 0; i < d.size(); ++i) {
       const std::vector<int> tets = tetsOfSource(mesh, c.sources[i]);
       if (d[i] <= 0.5 * segmentLength) core.insert(core.end(), tets.begin(), tets.end());
@@ -232,7 +242,7 @@ ReconnectCurvesResult reconnectCurves(const TensorField& field, const ReconnectC
       throw Error(askedProblem);
     }
   }
-  const Setup* current = &*asked;
+  Setup* current = &*asked;
   const Setup& s = *asked;  // the picks and curves, the same for every segment length
   const DegenerateType type = all.curve(s.picks[0].curveId).type;
   for (int k = 0; k < 2; ++k) {
@@ -245,14 +255,18 @@ ReconnectCurvesResult reconnectCurves(const TensorField& field, const ReconnectC
 
   std::optional<ReconnectCurvesResult> result;
   double segmentLength = report.segmentLength;
+  int conflictRegrowths = 0;  // of the current segment length
   auto attemptTry = [&](int, ReconnectTry& attempt) {
     attempt.segmentLength = segmentLength;
     const BallRegion region =
         growBallRegion(mesh, current->seeds, current->forbid.flag, {attempt.distance}, progress);
     if (!region.complete) {
-      if (region.blockingTet >= 0)
+      if (region.blockingTet >= 0 && current->forbid.owner[region.blockingTet] >= 0)
         throw Error("no ball region holds both segments without cutting " +
                     describeCurve(all.curve(current->forbid.owner[region.blockingTet])));
+      if (region.blockingTet >= 0)
+        throw Error("no ball region holds both segments without a degenerate point of the "
+                    "other type that no extracted curve covers");
       throw Error("no ball region holds both segments: " + region.growStop);
     }
     attempt.regionTets = region.tets.size();
@@ -265,6 +279,23 @@ ReconnectCurvesResult reconnectCurves(const TensorField& field, const ReconnectC
     const RegionVertices rv = heldOnSurface(mesh, regionVertices(mesh, region.tets));
     const RegionComplex complex = regionComplex(mesh, region.tets);
     const VectorisedEigenvector vec = vectoriseEigenvector(field, complex, type);
+    if (vec.signConflicts > 0 && conflictRegrowths < kConflictRegrowths) {
+      // §6.2 step 1: the region holds no degenerate point but the segments'. A sign conflict
+      // marks one of the other type that no extracted curve covers: the tets around the
+      // conflicting edges are forbidden like another curve's and the region grows again (as
+      // for removal, remove_curves.h), unless that takes a seed.
+      bool seedTaken = false;
+      std::vector<unsigned char> isSeed(mesh.tetCount(), 0);
+      for (int t : current->seeds) isSeed[t] = 1;
+      for (int e : vec.conflictEdges)
+        for (int v : mesh.edges()[e])
+          for (int n : mesh.vertexTets(v)) {
+            seedTaken = seedTaken || isSeed[n];
+            if (!isSeed[n]) current->forbid.add(n, -2 - e);
+          }
+      ++conflictRegrowths;
+      if (!seedTaken) return TryOutcome::Again;
+    }
     if (vec.signConflicts > 0)
       return fail("eigenvector orientable",
                   std::to_string(vec.signConflicts) +
@@ -343,6 +374,7 @@ ReconnectCurvesResult reconnectCurves(const TensorField& field, const ReconnectC
       continue;
     }
     current = &*other;
+    conflictRegrowths = 0;
     std::vector<ReconnectTry> tries;
     try {
       verified = runEditTries(plan, tries, progress, attemptTry);

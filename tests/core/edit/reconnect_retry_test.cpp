@@ -21,6 +21,7 @@
 #include "core/topology/extract_degenerate_curves.h"
 #include "tests/core/design/curve_test_meshes.h"
 #include "tests/core/edit/reconnect_test_fields.h"
+#include "tests/core/edit/removal_test_fields.h"
 
 namespace tfd::core {
 namespace {
@@ -127,6 +128,39 @@ TEST(ReconnectRetries, SegmentsReachingACurvesEndUseAnotherLength) {
   for (const std::string& line : r.report.lines())
     said = said || line.find("the asked segments had no valid setup") == 0;
   EXPECT_TRUE(said);
+}
+
+TEST(ReconnectRetries, ALoopTooShortForTheSegmentsIsNoValidSegment) {
+  // A small mixed loop (circle of radius 0.2 in y = 0 around (−0.3, 0, 0)) and a line x = 0.35:
+  // segments of length 1.2 would hold the whole loop. Before, every try failed ("the whole loop
+  // … is inside the region"); now that length has no valid setup, and a shorter one is used
+  // or the reconnection is refused naming the loop.
+  const TensorField field = testing::designedField(
+      box(),
+      [](const Vec3& p) {
+        const Vec3 q = p - Vec3(-0.3, 0, 0);
+        return testing::bounded(testing::loopW(q, 0.2) * testing::line(p, 0.35, 0));
+      },
+      [](const Vec3&) { return testing::upFrame(); });
+  const DegenerateCurves curves = extractDegenerateCurves(field);
+  ASSERT_EQ(curves.size(), 2u) << curves.summary();
+  ReconnectCurvesOptions o;
+  o.picks = {Vec3(-0.1, 0, 0), Vec3(0.35, 0, 0)};
+  o.segmentLength = 1.2;
+  o.regionDistance = 0.3;
+  try {
+    const ReconnectCurvesResult r = reconnectCurves(field, o);
+    for (const std::string& line : r.report.lines()) std::printf("  %s\n", line.c_str());
+    EXPECT_NE(r.report.askedSegmentProblem.find("is too short for segments"), std::string::npos)
+        << r.report.askedSegmentProblem;
+    EXPECT_LT(r.report.segmentLength, 1.2);
+    EXPECT_EQ(extractDegenerateCurves(r.field).size(), 1u);  // the loop joined the line
+  } catch (const ReconnectionFailed& e) {
+    FAIL() << e.what();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("is too short for segments"), std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace
