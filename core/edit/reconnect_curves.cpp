@@ -265,8 +265,9 @@ ReconnectCurvesResult reconnectCurves(const TensorField& field, const ReconnectC
         throw Error("no ball region holds both segments without cutting " +
                     describeCurve(all.curve(current->forbid.owner[region.blockingTet])));
       if (region.blockingTet >= 0)
-        throw Error("no ball region holds both segments without a degenerate point of the "
-                    "other type that no extracted curve covers");
+        throw Error(
+            "no ball region holds both segments without a degenerate point of the "
+            "other type that no extracted curve covers");
       throw Error("no ball region holds both segments: " + region.growStop);
     }
     attempt.regionTets = region.tets.size();
