@@ -16,6 +16,15 @@
 //    curves, random
 //    segment lengths and region distances; counts verified, refused (no region / segments that
 //    do not leave it) and failed (no try verified), with the failed checks.
+//  - AllEdits: every edit (removals of the four kinds, reconnections, deformations onto random
+//    smooth targets) on fields from random constraints and from the boundary curvature of the
+//    solids of RandomRemovals (pebble.obj a surface mesh), and designed two-loop fields on two
+//    solid tori; targets picked automatically. Counts per kind attempts, verified, refused (no
+//    valid region or segment) and failed (the check named); every verified result is checked
+//    again here (outside unchanged bitwise, a fresh extraction's curve count, the paired ends
+//    joined, the target followed), a mismatch counted as a silent failure.
+//  - RemoveTwoLoops1M: two-loop removal (a reconnection, then a one-loop removal) of a wedge
+//    and a trisector circle on a ~1M-tet TetGen solid torus.
 // Commands and figures: bench/RESULTS.md.
 #include <benchmark/benchmark.h>
 
@@ -23,7 +32,10 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
+#include <functional>
+#include <limits>
 #include <map>
 #include <random>
 #include <string>
@@ -32,6 +44,7 @@
 #include "core/edit/deform_curve.h"
 #include "core/edit/reconnect_curves.h"
 #include "core/edit/remove_curves.h"
+#include "core/point_locator.h"
 #include "core/structured_mesh.h"
 #include "core/surface/primitives.h"
 #include "core/topology/extract_degenerate_curves.h"
@@ -328,9 +341,21 @@ void RandomReconnections(benchmark::State& state) {
         const std::string m = e.what();
         const auto a = m.find("check '"), b = m.find('\'', a + 7);
         ++reasons["failed: " + m.substr(a + 7, b - a - 7)];
+        std::fprintf(stderr,
+                     "FAILED #%d (%s; picks (%.4g %.4g %.4g) (%.4g %.4g %.4g), segment %.4g, "
+                     "distance %.4g): %s\n",
+                     i, scenarios[k].name, o.picks[0].x(), o.picks[0].y(), o.picks[0].z(),
+                     o.picks[1].x(), o.picks[1].y(), o.picks[1].z(), o.segmentLength,
+                     o.regionDistance, m.c_str());
       } catch (const Error& e) {
         ++refused;
         ++reasons["refused: " + std::string(e.what()).substr(0, 60)];
+        std::fprintf(stderr,
+                     "REFUSED #%d (%s; picks (%.4g %.4g %.4g) (%.4g %.4g %.4g), segment %.4g, "
+                     "distance %.4g): %s\n",
+                     i, scenarios[k].name, o.picks[0].x(), o.picks[0].y(), o.picks[0].z(),
+                     o.picks[1].x(), o.picks[1].y(), o.picks[1].z(), o.segmentLength,
+                     o.regionDistance, e.what());
       }
     }
   }
@@ -414,6 +439,382 @@ void RandomRemovals(benchmark::State& state) {
   for (const auto& [check, n] : failedChecks) state.counters["failed:" + check] = n;
 }
 BENCHMARK(RandomRemovals)->Arg(100)->Iterations(1)->Unit(benchmark::kSecond);
+
+// ---------------------------------------------------------------------------------------------
+// AllEdits (issue 11): the randomized success benchmark of every edit.
+
+/// Two circles around the z axis in the plane z = z0, radii r1 < r2, one pure wedge and one
+/// pure trisector (the inner one the trisector when `innerTrisector`), for the frame
+/// testing::turningFrame (remove_two_loops_test.cpp's field with free radii).
+testing::Complex twoCirclesW(const Vec3& p, double r1, double r2, double z0, bool innerTrisector) {
+  const double rho = std::hypot(p.x(), p.y());
+  testing::Complex inner(rho - r1, p.z() - z0), outer(rho - r2, p.z() - z0);
+  (innerTrisector ? inner : outer) = std::conj(innerTrisector ? inner : outer);
+  const testing::Complex w = 10.0 * inner * outer;
+  return w / std::sqrt(1 + std::norm(w));
+}
+
+/// A verified edit checked again by the benchmark, independently of the edit's own
+/// verification: every vertex outside the returned region keeps its tensor bitwise, and a
+/// fresh extraction of the returned field finds the curves the result claims, as many as the
+/// edit must leave. Returns the problem, empty when none.
+std::string recheck(const TensorField& before, const TensorField& after,
+                    const std::vector<int>& regionTets, const DegenerateCurves& claimed,
+                    const DegenerateCurves& again, std::size_t expected) {
+  const TetMesh& mesh = before.mesh();
+  std::vector<char> inRegion(mesh.vertexCount(), 0);
+  for (int t : regionTets)
+    for (int v : mesh.tets()[t]) inRegion[v] = 1;
+  for (int v = 0; v < int(mesh.vertexCount()); ++v)
+    if (!inRegion[v] && std::memcmp(&before.at(v), &after.at(v), sizeof(Tensor)) != 0)
+      return "vertex " + std::to_string(v) + " outside the region changed";
+  if (again.size() != claimed.size())
+    return "re-extraction finds " + std::to_string(again.size()) + " curves, the result claims " +
+           std::to_string(claimed.size());
+  if (again.size() != expected)
+    return std::to_string(again.size()) + " curves after the edit, " + std::to_string(expected) +
+           " expected";
+  return {};
+}
+
+/// Whether one curve holds both points (within 1e-6 mean edge lengths).
+bool oneCurveHolds(const DegenerateCurves& curves, const Vec3& a, const Vec3& b, double h) {
+  for (const DegenerateCurve& c : curves.curves()) {
+    bool ha = false, hb = false;
+    for (const Vec3& p : c.points) {
+      ha = ha || (p - a).norm() < 1e-6 * h;
+      hb = hb || (p - b).norm() < 1e-6 * h;
+    }
+    if (ha && hb) return true;
+  }
+  return false;
+}
+
+/// Point indices of the middle half of an open curve, or all of a loop's.
+std::vector<std::size_t> middleIndices(const DegenerateCurve& c) {
+  std::vector<std::size_t> out;
+  const std::size_t n = c.points.size();
+  for (std::size_t i = 0; i < n; ++i)
+    if (c.closed || (4 * i >= n && 4 * i < 3 * n)) out.push_back(i);
+  return out;
+}
+
+/// Reconnection picks for two distinct curves of one type: where their middle parts come
+/// closest (a user reconnects two segments that pass near each other).
+std::array<Vec3, 2> closestMiddlePoints(const DegenerateCurve& a, const DegenerateCurve& b) {
+  double best = std::numeric_limits<double>::infinity();
+  std::array<Vec3, 2> out{a.points[0], b.points[0]};
+  for (std::size_t i : middleIndices(a))
+    for (std::size_t j : middleIndices(b))
+      if (const double d = (a.points[i] - b.points[j]).squaredNorm(); d < best)
+        best = d, out = {a.points[i], b.points[j]};
+  return out;
+}
+
+/// A random smooth deformation target for the curve: an arc of length `length` around a random
+/// point of its middle half, pushed sideways by amplitude · sin²(π s) (s ∈ [0, 1] along the arc)
+/// in a random direction across the arc's chord; the ends stay on the curve. Empty when the arc
+/// would reach an open curve's end or a target point leaves the mesh.
+std::vector<Vec3> smoothTarget(const TetMesh& mesh, const DegenerateCurve& c, double length,
+                               double amplitude, std::mt19937& rng, Vec3& pick) {
+  const std::vector<std::size_t> middle = middleIndices(c);
+  if (middle.empty()) return {};
+  const int n = int(c.points.size());
+  const int centre = int(middle[rng() % middle.size()]);
+  pick = c.points[centre];
+  std::vector<int> idx{centre};
+  for (int dir : {-1, 1}) {
+    double s = 0;
+    for (int j = centre; s < 0.5 * length;) {
+      int next = j + dir;
+      if (c.closed) next = (next + n) % n;
+      if (next < 0 || next >= n || next == centre || int(idx.size()) >= n) return {};
+      s += (c.points[next] - c.points[j]).norm();
+      j = next;
+      if (dir < 0)
+        idx.insert(idx.begin(), j);
+      else
+        idx.push_back(j);
+    }
+  }
+  std::vector<double> s(idx.size(), 0);
+  for (std::size_t i = 1; i < idx.size(); ++i)
+    s[i] = s[i - 1] + (c.points[idx[i]] - c.points[idx[i - 1]]).norm();
+  const Vec3 chord = (c.points[idx.back()] - c.points[idx.front()]).normalized();
+  std::normal_distribution<double> g;
+  Vec3 dir(g(rng), g(rng), g(rng));
+  dir -= dir.dot(chord) * chord;
+  if (!(dir.norm() > 1e-6)) return {};
+  dir.normalize();
+  std::vector<Vec3> target;
+  for (std::size_t i = 0; i < idx.size(); ++i) {
+    const double w = std::sin(3.14159265358979 * s[i] / s.back());
+    target.push_back(c.points[idx[i]] + amplitude * w * w * dir);
+    if (!mesh.locator().locate(target.back())) return {};
+  }
+  return target;
+}
+
+struct EditTally {
+  int attempts = 0, verified = 0, refused = 0, failed = 0, silent = 0;
+  void add(const EditTally& o) {
+    attempts += o.attempts, verified += o.verified, refused += o.refused;
+    failed += o.failed, silent += o.silent;
+  }
+};
+
+/// The failed check a *Failed message names ("check '…'"), or what it says.
+std::string failedCheckOf(const std::string& m) {
+  const auto a = m.find("check '");
+  if (a == std::string::npos) return "(no check named) " + m.substr(0, 70);
+  const auto b = m.find('\'', a + 7);
+  std::string prefix;
+  if (m.rfind("two-loop removal, step 1", 0) == 0) prefix = "step 1: ";
+  if (m.rfind("two-loop removal, step 2", 0) == 0) prefix = "step 2: ";
+  return prefix + m.substr(a + 7, b - a - 7);
+}
+
+/// What a refusal says, in a few words (its message names the curves and places).
+std::string refusalKind(const std::string& m) {
+  const std::pair<const char*, const char*> kinds[] = {
+      {"no ball region", "no ball region without another curve"},
+      {"ends on the domain surface", "segment reaches the curve's end on the surface"},
+      {"reach where a picked curve ends", "segment reaches the curve's end on the surface"},
+      {"is too short for segments", "loop too short for the segments"},
+      {"is outside the mesh", "target outside the mesh"},
+      {"different L/P types", "curves of different types"}};
+  for (const auto& [needle, kind] : kinds)
+    if (m.find(needle) != std::string::npos) return kind;
+  return m.substr(0, 60);
+}
+
+void AllEdits(benchmark::State& state) {
+  auto solids = randomSolids();
+  PrimitiveSpec torusSpec;
+  torusSpec.shape = PrimitiveShape::Torus;
+  torusSpec.majorRadius = 0.6, torusSpec.minorRadius = 0.36;
+  const std::vector<std::pair<std::string, std::shared_ptr<const TetMesh>>> tori = {
+      solids[2], {"torus (TetGen)", io::meshPrimitive(torusSpec, 25'000)}};
+  const int wanted = int(state.range(0));
+  // At most this many possible edits (region found) per kind, so that no kind fills the quota
+  // alone; the rare kinds (removals of curves of random fields) take what the fields give.
+  const std::map<std::string, int> cap = {
+      {"deformation", wanted / 4}, {"reconnection", wanted / 4}, {"two-loop", wanted / 8}};
+  const int maxFields = 2 * wanted;
+  std::map<std::string, EditTally> byKind, bySolid, bySource;
+  std::map<std::string, int> failedChecks, refusals;
+  EditTally total;
+  int fields = 0;
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> unit(0, 1);
+  for (auto _ : state) {
+    while (total.verified + total.failed < wanted && fields < maxFields) {
+      const bool twoLoops = fields % 6 == 5;
+      const auto& [name, mesh] = twoLoops ? tori[(fields / 6) % 2] : solids[fields % solids.size()];
+      const bool curvature = !twoLoops && fields % 4 == 3;
+      const std::string source = twoLoops    ? "designed two loops"
+                                 : curvature ? "curvature"
+                                             : "random constraints";
+      ++fields;
+      TensorField field = [&] {
+        if (twoLoops) {
+          const double r1 = 0.40 + 0.08 * unit(rng), r2 = 0.72 + 0.08 * unit(rng);
+          const double z0 = 0.1 * (unit(rng) - 0.5);
+          const bool inner = rng() % 2;
+          return testing::designedField(
+              mesh, [=](const Vec3& p) { return twoCirclesW(p, r1, r2, z0, inner); },
+              testing::turningFrame);
+        }
+        try {
+          return randomDesign(mesh, rng, curvature);
+        } catch (const Error&) {
+          return TensorField(mesh, std::vector<Tensor>(mesh->vertexCount()));
+        }
+      }();
+      const DegenerateCurves curves = extractDegenerateCurves(field);
+      const double h = mesh->meanEdgeLength();
+      const double radius = 0.5 * (mesh->boundsMax() - mesh->boundsMin()).norm();
+      struct Edit {
+        std::string kind;
+        std::function<std::string()> run;  ///< throws; returns the recheck's problem
+      };
+      std::vector<Edit> edits;
+      // Removals: the targets whose scenario applies, picked at their middle points.
+      auto targets = removableTargets(curves);
+      std::shuffle(targets.begin(), targets.end(), rng);
+      if (targets.size() > 2) targets.resize(2);
+      for (const auto& target : targets) {
+        const RemovalScenario scenario = removalScenario(target);
+        RemoveCurvesOptions o;
+        for (const DegenerateCurve* c : target) o.picks.push_back(c->points[c->points.size() / 2]);
+        const std::size_t expected =
+            curves.size() -
+            (scenario == RemovalScenario::TwoCurve || scenario == RemovalScenario::TwoLoop ? 2 : 1);
+        edits.push_back({toString(scenario), [&field, o, expected] {
+                           const RemoveCurvesResult r = removeCurves(field, o);
+                           return recheck(field, r.field, r.regionTets, r.curves,
+                                          extractDegenerateCurves(r.field), expected);
+                         }});
+      }
+      // Reconnections: pairs of distinct curves of one type, picked where they come closest.
+      std::vector<std::array<int, 2>> pairs;
+      for (const DegenerateCurve& a : curves.curves())
+        for (const DegenerateCurve& b : curves.curves())
+          if (a.id < b.id && a.type == b.type) pairs.push_back({a.id, b.id});
+      std::shuffle(pairs.begin(), pairs.end(), rng);
+      if (pairs.size() > 2) pairs.resize(2);
+      for (const auto& [ia, ib] : pairs) {
+        const DegenerateCurve &a = curves.curve(ia), &b = curves.curve(ib);
+        ReconnectCurvesOptions o;
+        const std::array<Vec3, 2> picks = closestMiddlePoints(a, b);
+        o.picks = {picks[0], picks[1]};
+        o.curves = &curves;
+        // Two open curves keep their number; a loop joins the other curve.
+        const std::size_t expected = curves.size() - (a.closed || b.closed ? 1 : 0);
+        edits.push_back({"reconnection", [&field, o, expected, h] {
+                           const ReconnectCurvesResult r = reconnectCurves(field, o);
+                           const DegenerateCurves again = extractDegenerateCurves(r.field);
+                           std::string problem =
+                               recheck(field, r.field, r.regionTets, r.curves, again, expected);
+                           for (int i = 0; problem.empty() && i < 4; ++i)
+                             if (!oneCurveHolds(again, r.report.ends[i].position,
+                                                r.report.ends[r.report.partner[i]].position, h))
+                               problem = std::string("no curve joins end ") + endpointName(i) +
+                                         " to its partner";
+                           return problem;
+                         }});
+      }
+      // Deformations: a random arc of a random curve onto a random smooth target.
+      std::vector<int> ids(curves.size());
+      for (std::size_t i = 0; i < ids.size(); ++i) ids[i] = int(i);
+      std::shuffle(ids.begin(), ids.end(), rng);
+      int deforms = 0;
+      for (int id : ids) {
+        if (deforms == 2) break;
+        DeformCurveOptions o;
+        // An arc of 15–35 % of the bounding radius pushed by 1–3 edge lengths, at most 30 %
+        // of the arc's length (a smooth bump, not a spike).
+        const double length = (0.15 + 0.2 * unit(rng)) * radius;
+        o.target = smoothTarget(*mesh, curves.curve(id), length,
+                                std::min((1 + 2 * unit(rng)) * h, 0.3 * length), rng, o.pick);
+        if (o.target.empty()) continue;
+        o.curves = &curves;
+        ++deforms;
+        const std::size_t expected = curves.size();
+        edits.push_back(
+            {"deformation", [&field, o, expected] {
+               const DeformCurveResult r = deformCurve(field, o);
+               const DegenerateCurves again = extractDegenerateCurves(r.field);
+               std::string problem =
+                   recheck(field, r.field, r.regionTets, r.curves, again, expected);
+               for (const Vec3& p : o.target)
+                 if (problem.empty() && again.pick(p)->distance > 1.001 * r.report.tolerance)
+                   problem = "the new curve is " + std::to_string(again.pick(p)->distance) +
+                             " from the target (bound " + std::to_string(r.report.tolerance) + ")";
+               return problem;
+             }});
+      }
+      for (const Edit& edit : edits) {
+        EditTally& kind = byKind[edit.kind];
+        const auto capped = cap.find(edit.kind);
+        if ((capped != cap.end() && kind.verified + kind.failed >= capped->second) ||
+            total.verified + total.failed >= wanted)
+          continue;
+        EditTally one;
+        one.attempts = 1;
+        try {
+          const std::string problem = edit.run();
+          one.verified = 1;
+          if (!problem.empty()) {
+            one.silent = 1;
+            std::fprintf(stderr, "SILENT (field %d, %s, %s, %s): %s\n", fields, name.c_str(),
+                         source.c_str(), edit.kind.c_str(), problem.c_str());
+          }
+        } catch (const RemovalFailed& e) {
+          one.failed = 1, ++failedChecks[edit.kind + ": " + failedCheckOf(e.what())];
+          std::fprintf(stderr, "FAILED (field %d, %s, %s, %s): %s\n", fields, name.c_str(),
+                       source.c_str(), edit.kind.c_str(), e.what());
+        } catch (const ReconnectionFailed& e) {
+          one.failed = 1, ++failedChecks[edit.kind + ": " + failedCheckOf(e.what())];
+          std::fprintf(stderr, "FAILED (field %d, %s, %s, %s): %s\n", fields, name.c_str(),
+                       source.c_str(), edit.kind.c_str(), e.what());
+        } catch (const DeformationFailed& e) {
+          one.failed = 1, ++failedChecks[edit.kind + ": " + failedCheckOf(e.what())];
+          std::fprintf(stderr, "FAILED (field %d, %s, %s, %s): %s\n", fields, name.c_str(),
+                       source.c_str(), edit.kind.c_str(), e.what());
+        } catch (const Error& e) {  // RemovalRefused and the edits' set-up errors
+          one.refused = 1;
+          ++refusals[edit.kind + ": " + refusalKind(e.what())];
+        }
+        total.add(one), kind.add(one), bySolid[name].add(one), bySource[source].add(one);
+        if (total.attempts % 20 == 0)
+          std::fprintf(stderr, "... %d fields, %d attempts, %d verified, %d failed\n", fields,
+                       total.attempts, total.verified, total.failed);
+      }
+    }
+  }
+  std::fprintf(stderr, "%-24s %8s %8s %8s %8s %6s\n", "", "attempts", "verified", "refused",
+               "failed", "silent");
+  for (const auto* table : {&byKind, &bySolid, &bySource})
+    for (const auto& [key, t] : *table)
+      std::fprintf(stderr, "%-24s %8d %8d %8d %8d %6d\n", key.c_str(), t.attempts, t.verified,
+                   t.refused, t.failed, t.silent);
+  std::fprintf(stderr, "%-24s %8d %8d %8d %8d %6d\n", "total", total.attempts, total.verified,
+               total.refused, total.failed, total.silent);
+  for (const auto& [check, n] : failedChecks)
+    std::fprintf(stderr, "  failed %3d  %s\n", n, check.c_str());
+  for (const auto& [why, n] : refusals) std::fprintf(stderr, "  refused %3d  %s\n", n, why.c_str());
+  state.counters["fields"] = fields;
+  state.counters["attempts"] = total.attempts;
+  state.counters["verified"] = total.verified;
+  state.counters["refused"] = total.refused;
+  state.counters["failed"] = total.failed;
+  state.counters["silent"] = total.silent;
+  state.counters["success_of_possible"] =
+      total.verified + total.failed > 0 ? double(total.verified) / (total.verified + total.failed)
+                                        : 0;
+}
+BENCHMARK(AllEdits)->Arg(210)->Iterations(1)->Unit(benchmark::kSecond);
+
+/// The two circles of remove_two_loops_test.cpp (ρ = 0.45 wedge, ρ = 0.75 trisector) on a
+/// TetGen solid torus (R = 0.6, r = 0.36) of about 1M tets.
+void RemoveTwoLoops1M(benchmark::State& state) {
+  static const TensorField field = [] {
+    PrimitiveSpec spec;
+    spec.shape = PrimitiveShape::Torus;
+    spec.majorRadius = 0.6, spec.minorRadius = 0.36;
+    return testing::designedField(
+        io::meshPrimitive(spec, 1'000'000),
+        [](const Vec3& p) { return twoCirclesW(p, 0.45, 0.75, 0, false); }, testing::turningFrame);
+  }();
+  RemoveCurvesOptions o;
+  o.picks = {Vec3(0.45, 0, 0), Vec3(-0.75, 0, 0)};
+  o.regionDistance = state.range(0) < 0 ? -1 : state.range(0) / 100.0;
+  RemoveCurvesResult last{field, {}, {}, {}};
+  bool verified = true;
+  for (auto _ : state) {
+    try {
+      last = removeCurves(field, o);
+    } catch (const RemovalFailed& e) {  // reported, not hidden
+      verified = false;
+      state.SetLabel(e.what());
+    }
+  }
+  state.counters["verified"] = verified;
+  state.counters["tets"] = double(field.mesh().tetCount());
+  state.counters["region_tets"] = double(last.regionTets.size());
+  state.counters["step2_region_tets"] = double(last.report.regionTets);
+  state.counters["curves_after"] = double(last.curves.size());
+  state.counters["peak_MB"] = peakMegabytes();
+}
+BENCHMARK(RemoveTwoLoops1M)
+    ->Arg(15)
+    ->Arg(25)
+    ->Arg(-1)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1)
+    ->Repetitions(2)
+    ->ReportAggregatesOnly(false);
 
 }  // namespace
 

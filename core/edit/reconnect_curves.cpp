@@ -37,13 +37,21 @@ std::vector<double> arcDistances(const DegenerateCurve& c, const CurvePick& pick
   return d;
 }
 
+/// Regrowths of the region around sign conflicts per segment length (as for removal).
+constexpr int kConflictRegrowths = 8;
+
+/// Segment lengths tried after the asked one, as factors of it (reconnectCurves).
+constexpr double kSegmentFactors[] = {0.6, 1.5};
+
 std::string endText(const ReconnectEndpoint& e) {
   return std::string(toString(e.pattern)) + ", " + (e.incoming ? "incoming" : "outgoing") +
          " (V·t " + editNumber(e.alignment) + "; boundary face: " +
          (e.faceIncoming < 0 ? "n/a"
           : e.faceIncoming   ? "incoming"
                              : "outgoing") +
-         ") at (" + editNumber(e.position.x()) + ", " + editNumber(e.position.y()) + ", " +
+         "; charge " + std::to_string(e.charge()) +
+         (e.ownAgrees() ? "" : ", voted along the segment against the end's own") + ") at (" +
+         editNumber(e.position.x()) + ", " + editNumber(e.position.y()) + ", " +
          editNumber(e.position.z()) + ")";
 }
 
@@ -61,6 +69,13 @@ RegionVertices heldOnSurface(const TetMesh& mesh, RegionVertices rv) {
   rv.freeOnSurface = 0;
   return rv;
 }
+
+/// The segments of one length have no valid setup: they reach a picked curve's end on the
+/// domain surface, or another curve passes next to them.
+class NoValidSegment : public Error {
+ public:
+  using Error::Error;
+};
 
 struct Setup {
   std::array<CurvePick, 2> picks;
@@ -110,11 +125,19 @@ Setup setUp(const TetMesh& mesh, const DegenerateCurves& all, const ReconnectCur
       const double toEnd =
           c.closed ? std::numeric_limits<double>::infinity() : std::min(dq.front(), dq.back());
       if (toEnd <= 0.5 * segmentLength + h)
-        throw Error("picks: " + describeCurve(c) + " ends on the domain surface " +
-                    editNumber(toEnd) + " along the curve from the pick, within half the " +
-                    "segment (" + editNumber(0.5 * segmentLength) + ") and an edge length: move " +
-                    "the pick or shorten segment_length");
+        throw NoValidSegment("picks: " + describeCurve(c) + " ends on the domain surface " +
+                             editNumber(toEnd) +
+                             " along the curve from the pick, within half the " + "segment (" +
+                             editNumber(0.5 * segmentLength) + ") and an edge length: move " +
+                             "the pick or shorten segment_length");
     }
+    // A loop must keep a part outside the region, so that the segments have ends: some point
+    // beyond the segment and its margin (forbidden below).
+    if (c.closed && *std::max_element(d.begin(), d.end()) <= 0.5 * segmentLength + 3 * h)
+      throw NoValidSegment("picks: the loop " + describeCurve(c) + " (length " +
+                           editNumber(c.length()) + ") is too short for segments of length " +
+                           editNumber(segmentLength) + " and a margin of three edge lengths " +
+                           "outside them (no valid segment: shorten segment_length)");
     for (std::size_t i = 0; i < d.size(); ++i) {
       const std::vector<int> tets = tetsOfSource(mesh, c.sources[i]);
       if (d[i] <= 0.5 * segmentLength) core.insert(core.end(), tets.begin(), tets.end());
@@ -126,9 +149,24 @@ Setup setUp(const TetMesh& mesh, const DegenerateCurves& all, const ReconnectCur
     }
   }
   s.seeds = withNeighbourTets(mesh, core);
+  // The seeds must keep off an open picked curve's ends on the domain surface: else the segment
+  // would end on the surface inside the region, and no region holding the seeds lets it leave
+  // through the held boundary.
+  std::vector<unsigned char> nearEnd(mesh.tetCount(), 0);
+  for (int id : s.targetIds) {
+    const DegenerateCurve& c = all.curve(id);
+    if (c.closed) continue;
+    for (std::size_t i : {std::size_t(0), c.points.size() - 1})
+      for (int t : tetsOfSource(mesh, c.sources[i])) nearEnd[t] = 1;
+  }
+  for (int t : s.seeds)
+    if (nearEnd[t])
+      throw NoValidSegment("picks: the segments of length " + editNumber(segmentLength) +
+                           " around the picks reach where a picked curve ends on the domain "
+                           "surface (no valid segment: move the pick or shorten segment_length)");
   for (int t : s.seeds)
     if (s.forbid.flag[t])
-      throw Error(
+      throw NoValidSegment(
           "no ball region holds both segments: " + describeCurve(all.curve(s.forbid.owner[t])) +
           " passes next to them (move the picks or shorten segment_length)");
   std::vector<unsigned char> isSeed(mesh.tetCount(), 0);
@@ -167,6 +205,14 @@ std::vector<std::string> ReconnectCurvesReport::lines() const {
   out.push_back(sheetField.summary());
   out.push_back("new curves: " + newCurves[0] + "; " + newCurves[1]);
   out.push_back("tries: " + std::to_string(tries.size()) + describeTries(tries));
+  if (!askedSegmentProblem.empty())
+    out.push_back("the asked segments had no valid setup (" + askedSegmentProblem +
+                  "); segments of length " + editNumber(segmentLength) + " were used");
+  if (!tries.empty() && tries.back().segmentLength != tries.front().segmentLength) {
+    std::string lengths = "segment length per try:";
+    for (const ReconnectTry& t : tries) lengths += " " + editNumber(t.segmentLength);
+    out.push_back(lengths);
+  }
   addEditClosingLines(out, seconds, curvesBefore, curvesAfter);
   return out;
 }
@@ -179,7 +225,25 @@ ReconnectCurvesResult reconnectCurves(const TensorField& field, const ReconnectC
   progress.report(0, "extracting curves");
   const DegenerateCurves all = extractDegenerateCurves(field, o.extract, progress);
   ReconnectCurvesReport report;
-  const Setup s = setUp(mesh, all, o, report.segmentLength);
+  // The asked segments; when they have no valid setup, the other lengths below are tried
+  // before refusing.
+  std::optional<Setup> asked;
+  std::string askedProblem;
+  try {
+    asked = setUp(mesh, all, o, report.segmentLength);
+  } catch (const NoValidSegment& e) {
+    askedProblem = e.what();
+    ReconnectCurvesOptions tiny = o;  // the picks and curves alone (segments of one edge)
+    tiny.segmentLength = mesh.meanEdgeLength();
+    double ignored = 0;
+    try {
+      asked = setUp(mesh, all, tiny, ignored);
+    } catch (const NoValidSegment&) {
+      throw Error(askedProblem);
+    }
+  }
+  Setup* current = &*asked;
+  const Setup& s = *asked;  // the picks and curves, the same for every segment length
   const DegenerateType type = all.curve(s.picks[0].curveId).type;
   for (int k = 0; k < 2; ++k) {
     report.curves[k] = describeCurve(all.curve(s.picks[k].curveId));
@@ -190,13 +254,20 @@ ReconnectCurvesResult reconnectCurves(const TensorField& field, const ReconnectC
       {{s.picks[0].curveId, s.picks[0].pointIndex}, {s.picks[1].curveId, s.picks[1].pointIndex}}};
 
   std::optional<ReconnectCurvesResult> result;
+  double segmentLength = report.segmentLength;
+  int conflictRegrowths = 0;  // of the current segment length
   auto attemptTry = [&](int, ReconnectTry& attempt) {
+    attempt.segmentLength = segmentLength;
     const BallRegion region =
-        growBallRegion(mesh, s.seeds, s.forbid.flag, {attempt.distance}, progress);
+        growBallRegion(mesh, current->seeds, current->forbid.flag, {attempt.distance}, progress);
     if (!region.complete) {
-      if (region.blockingTet >= 0)
+      if (region.blockingTet >= 0 && current->forbid.owner[region.blockingTet] >= 0)
         throw Error("no ball region holds both segments without cutting " +
-                    describeCurve(all.curve(s.forbid.owner[region.blockingTet])));
+                    describeCurve(all.curve(current->forbid.owner[region.blockingTet])));
+      if (region.blockingTet >= 0)
+        throw Error(
+            "no ball region holds both segments without a degenerate point of the "
+            "other type that no extracted curve covers");
       throw Error("no ball region holds both segments: " + region.growStop);
     }
     attempt.regionTets = region.tets.size();
@@ -209,6 +280,23 @@ ReconnectCurvesResult reconnectCurves(const TensorField& field, const ReconnectC
     const RegionVertices rv = heldOnSurface(mesh, regionVertices(mesh, region.tets));
     const RegionComplex complex = regionComplex(mesh, region.tets);
     const VectorisedEigenvector vec = vectoriseEigenvector(field, complex, type);
+    if (vec.signConflicts > 0 && conflictRegrowths < kConflictRegrowths) {
+      // §6.2 step 1: the region holds no degenerate point but the segments'. A sign conflict
+      // marks one of the other type that no extracted curve covers: the tets around the
+      // conflicting edges are forbidden like another curve's and the region grows again (as
+      // for removal, remove_curves.h), unless that takes a seed.
+      bool seedTaken = false;
+      std::vector<unsigned char> isSeed(mesh.tetCount(), 0);
+      for (int t : current->seeds) isSeed[t] = 1;
+      for (int e : vec.conflictEdges)
+        for (int v : mesh.edges()[e])
+          for (int n : mesh.vertexTets(v)) {
+            seedTaken = seedTaken || isSeed[n];
+            if (!isSeed[n]) current->forbid.add(n, -2 - e);
+          }
+      ++conflictRegrowths;
+      if (!seedTaken) return TryOutcome::Again;
+    }
     if (vec.signConflicts > 0)
       return fail("eigenvector orientable",
                   std::to_string(vec.signConflicts) +
@@ -267,8 +355,40 @@ ReconnectCurvesResult reconnectCurves(const TensorField& field, const ReconnectC
     result = ReconnectCurvesResult{std::move(*edited), std::move(after), region.tets, {}};
     return TryOutcome::Verified;
   };
-  if (!runEditTries(plan, report.tries, progress, attemptTry))
-    failAfterTries<ReconnectionFailed>("reconnection", report.tries);
+  // The asked segments first, over the growing regions; when no try verified, shorter and then
+  // longer segments (their ends, where the new curves start, move along the curves: away from a
+  // place where the re-solved field folds a loop or a path pairs badly), each over the same
+  // regions. A segment length without a valid setup (it reaches a curve's end or another curve)
+  // is skipped; for the asked one that is the refusal.
+  bool verified = askedProblem.empty() && runEditTries(plan, report.tries, progress, attemptTry);
+  for (const double factor : kSegmentFactors) {
+    if (verified) break;
+    segmentLength = factor * report.segmentLength;
+    if (segmentLength < 2 * mesh.meanEdgeLength()) continue;
+    ReconnectCurvesOptions variant = o;
+    variant.segmentLength = segmentLength;
+    std::optional<Setup> other;
+    try {
+      double ignored = 0;
+      other = setUp(mesh, all, variant, ignored);
+    } catch (const Error&) {
+      continue;
+    }
+    current = &*other;
+    conflictRegrowths = 0;
+    std::vector<ReconnectTry> tries;
+    try {
+      verified = runEditTries(plan, tries, progress, attemptTry);
+    } catch (const Cancelled&) {
+      throw;
+    } catch (const Error&) {  // no region for this segment length
+    }
+    report.tries.insert(report.tries.end(), tries.begin(), tries.end());
+    if (verified) report.segmentLength = segmentLength;
+  }
+  if (!verified && report.tries.empty()) throw Error(askedProblem);  // no length had a setup
+  if (!verified) failAfterTries<ReconnectionFailed>("reconnection", report.tries);
+  report.askedSegmentProblem = askedProblem;
   report.seconds = secondsSince(start);
   result->report = std::move(report);
   progress.report(1, "verified");

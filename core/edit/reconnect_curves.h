@@ -17,7 +17,8 @@
 // sheet, harmonic re-solve of the rest of the region (reconnect_field.h). Verification
 // (reconnect_verification.h): outside unchanged; inside, exactly two new curves, joining the ends
 // as paired. A failed try retries with the distance grown by `growFactor`, at most `retries` times
-// (edit_driver.h).
+// (edit_driver.h); when none verified, the same tries run with segments 0.6 and then 1.5 times
+// as long (the report's segmentLength is the one that verified).
 #include <array>
 #include <string>
 #include <vector>
@@ -54,6 +55,7 @@ class ReconnectionFailed : public Error {
 
 struct ReconnectTry {
   double distance = 0;
+  double segmentLength = 0;  ///< of the segments this try used
   std::size_t regionTets = 0, sheetTets = 0;
   std::string failedCheck, detail;  ///< empty when it passed
 };
@@ -76,6 +78,9 @@ struct ReconnectCurvesReport {
   SingularityFreeReport sheetField;
   std::array<std::string, 2> newCurves;  ///< describeCurve() of the curves through the region
   std::vector<ReconnectTry> tries;
+  /// Why the asked segment length had no valid setup (it reached a curve's end on the domain
+  /// surface, or another curve), when a shorter or longer one was used instead; else empty.
+  std::string askedSegmentProblem;
   double seconds = 0;
   std::size_t curvesBefore = 0, curvesAfter = 0;
   /// The node's info lines: curves, ends and pairing, region, sheet, tries, time, topology.

@@ -22,6 +22,10 @@
 // kept in the report for comparison. Equivalently: the curve's canonical orientation (the
 // tangent ∇α × ∇β, algorithms-notes §5.2; wedge where it agrees with V) enters the region at an
 // end of charge 0 and leaves it at an end of charge 1, and the reconnection keeps it.
+// So the charge is the same at every point of a segment (both the pattern and the sign of V · t
+// flip at a transition point), and it is read by a vote of the segment's points weighted by
+// |V · t| (reconnect_segments.h): one point next to a transition point, where V · t is near
+// zero and the pattern unsure, would misclassify an end.
 #include <array>
 #include <span>
 #include <string>
@@ -41,8 +45,20 @@ struct ReconnectEndpoint {
   bool incoming = false;  ///< V · t_in > 0 (V points along the curve into the region)
   double alignment = 0;   ///< V · t_in, both unit
   int faceIncoming = -1;  ///< by the boundary face: 1 incoming, 0 outgoing, −1 not on a face
-  /// Lemma 6.1's charge: incoming XOR wedge. Two ends may be joined when their charges differ.
-  int charge() const { return int(incoming) ^ int(pattern == DegeneratePattern::Wedge); }
+  /// The charge voted along the whole segment (reconnect_segments.h), −1 when not voted.
+  int votedCharge = -1;
+  /// Lemma 6.1's charge: incoming XOR wedge, as voted along the segment when it was (the end's
+  /// own point may sit next to a transition point, where both flip). Two ends may be joined
+  /// when their charges differ.
+  int charge() const {
+    return votedCharge >= 0 ? votedCharge
+                            : int(incoming) ^ int(pattern == DegeneratePattern::Wedge);
+  }
+  /// Whether the end's own pattern and V · t agree with the voted charge.
+  bool ownAgrees() const {
+    return votedCharge < 0 ||
+           votedCharge == (int(incoming) ^ int(pattern == DegeneratePattern::Wedge));
+  }
 };
 
 struct ReconnectPairing {

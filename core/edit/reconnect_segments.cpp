@@ -1,6 +1,7 @@
 #include "core/edit/reconnect_segments.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/edit/removal_scenario.h"
 #include "core/topology/curve_tets.h"
@@ -47,6 +48,34 @@ Walk walk(const TetMesh& mesh, const DegenerateCurve& c, int start, int dir,
   }
 }
 
+/// The non-repeating eigenvector at curve point j, oriented like the vectorised one at the
+/// region vertices of its source.
+Vec3 orientedEigenvector(const TetMesh& mesh, const DegenerateCurve& c, int j,
+                         const RegionComplex& region, const VectorisedEigenvector& vec) {
+  Vec3 v = c.eigenvectors[j];
+  double agree = 0;
+  for (int m : sourceVertices(mesh, c.sources[j]))
+    if (const int l = region.localVertex(m); l >= 0) agree += v.dot(vec.directions[l]);
+  return agree < 0 ? Vec3(-v) : v;
+}
+
+/// Lemma 6.1's charge of the segment's backward end (the curve followed forward, into the
+/// region): a vote of the segment's wedge and trisector points, each (V · t > 0) XOR wedge with
+/// t the forward tangent, weighted by |V · t|. Both the pattern and the sign of V · t flip at a
+/// transition point, so every point votes alike where it is classified right; the weight
+/// silences the points next to a transition point (V · t ≈ 0). −1 when no point votes.
+int votedCharge(const TetMesh& mesh, const DegenerateCurve& c, const std::vector<int>& points,
+                const RegionComplex& region, const VectorisedEigenvector& vec) {
+  double vote = 0;
+  for (int j : points) {
+    if (c.patterns[j] == DegeneratePattern::Transition) continue;
+    const double a = orientedEigenvector(mesh, c, j, region, vec).dot(c.tangents[j]);
+    const bool charge = (a > 0) != (c.patterns[j] == DegeneratePattern::Wedge);
+    vote += charge ? std::abs(a) : -std::abs(a);
+  }
+  return vote == 0 ? -1 : vote > 0 ? 1 : 0;
+}
+
 ReconnectEndpoint classify(const TetMesh& mesh, const DegenerateCurve& c, int segment, int j,
                            int inner, int dir, const std::vector<unsigned char>& inRegion,
                            const RegionComplex& region, const VectorisedEigenvector& vec) {
@@ -58,11 +87,7 @@ ReconnectEndpoint classify(const TetMesh& mesh, const DegenerateCurve& c, int se
   Vec3 tIn = -double(dir) * c.tangents[j];
   if (!(tIn.squaredNorm() > 0.5)) tIn = (c.points[inner] - c.points[j]).normalized();
   // The non-repeating eigenvector at the end, oriented like the vectorised one around it.
-  Vec3 v = c.eigenvectors[j];
-  double agree = 0;
-  for (int m : sourceVertices(mesh, c.sources[j]))
-    if (const int l = region.localVertex(m); l >= 0) agree += v.dot(vec.directions[l]);
-  if (agree < 0) v = -v;
+  const Vec3 v = orientedEigenvector(mesh, c, j, region, vec);
   e.alignment = v.dot(tIn);
   e.incoming = e.alignment > 0;
   if (c.sources[j].kind == PointSource::Kind::Face) {
@@ -130,6 +155,10 @@ ReconnectSegments findReconnectSegments(const TetMesh& mesh, const DegenerateCur
         classify(mesh, c, s, back.end, back.path[back.path.size() - 2], -1, inRegion, region, vec);
     r.ends[2 * s + 1] =
         classify(mesh, c, s, fwd.end, fwd.path[fwd.path.size() - 2], +1, inRegion, region, vec);
+    if (const int q = votedCharge(mesh, c, pts, region, vec); q >= 0) {
+      r.ends[2 * s].votedCharge = q;
+      r.ends[2 * s + 1].votedCharge = 1 - q;
+    }
   }
   if (picks[0][0] == picks[1][0]) {
     std::vector<int> a = r.points[0], b = r.points[1];
