@@ -7,6 +7,7 @@
 #include <numbers>
 #include <random>
 
+#include "core/derived_cache.h"
 #include "core/edit/angle_field.h"
 #include "core/error.h"
 #include "core/solve/harmonic_solver.h"
@@ -158,6 +159,7 @@ TEST(AngleField, SameResultForOneAndTwoThreads) {
   const int n = static_cast<int>(ball.region.vertices.size());
   const auto run = [&](int threads) {
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    derivedCache().clear();  // each run builds its own solver set-up
     std::vector<double> theta(n), jumps(ball.region.edges.size());
     for (int i = 0; i < n; ++i) theta[i] = ball.held[i] ? std::sin(i * 0.37) : 0;
     for (std::size_t e = 0; e < jumps.size(); ++e) jumps[e] = std::cos(e * 0.11) * 0.1;

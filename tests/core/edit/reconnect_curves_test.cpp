@@ -19,6 +19,7 @@
 #include <cstring>
 #include <functional>
 
+#include "core/derived_cache.h"
 #include "core/edit/reconnect_curves.h"
 #include "core/edit/reconnect_field.h"
 #include "core/edit/reconnect_sheet.h"
@@ -356,6 +357,7 @@ TEST(ReconnectCurves, OneAndTwoThreadsGiveTheSameBits) {
       testing::designedField(box(), s.W, [](const Vec3&) { return upFrame(); });
   auto run = [&](int threads) {
     tbb::global_control c(tbb::global_control::max_allowed_parallelism, threads);
+    derivedCache().clear();  // each run builds its own solver set-up
     return reconnectCurves(field, options(s));
   };
   const ReconnectCurvesResult a = run(1), b = run(2);
