@@ -61,20 +61,10 @@ DegeneratePattern analyticPattern(const std::function<Complex(const Vec3&)>& W, 
                                            : DegeneratePattern::Trisector;
 }
 
-/// Whether some curve holds both points (within 1e-6 mean edge lengths: the extraction's
-/// fallback perturbation may move the ends that much, reconnect_verification.h).
+/// testing::sameCurveHolds on the box by default.
 bool sameCurveHolds(const DegenerateCurves& curves, const Vec3& a, const Vec3& b,
                     const TetMesh& mesh = *box()) {
-  const double tolerance = 1e-6 * mesh.meanEdgeLength();
-  for (const DegenerateCurve& c : curves.curves()) {
-    bool ha = false, hb = false;
-    for (const Vec3& p : c.points) {
-      ha = ha || (p - a).norm() < tolerance;
-      hb = hb || (p - b).norm() < tolerance;
-    }
-    if (ha && hb) return true;
-  }
-  return false;
+  return testing::sameCurveHolds(curves, a, b, mesh);
 }
 
 ReconnectCurvesOptions options(const Scenario& s) {

@@ -31,19 +31,6 @@ std::shared_ptr<const TetMesh> box() {
   return mesh;
 }
 
-bool oneCurveHolds(const DegenerateCurves& curves, const Vec3& a, const Vec3& b) {
-  const double tolerance = 1e-6 * box()->meanEdgeLength();
-  for (const DegenerateCurve& c : curves.curves()) {
-    bool ha = false, hb = false;
-    for (const Vec3& p : c.points) {
-      ha = ha || (p - a).norm() < tolerance;
-      hb = hb || (p - b).norm() < tolerance;
-    }
-    if (ha && hb) return true;
-  }
-  return false;
-}
-
 using Joins = std::function<bool(const Vec3&, const Vec3&, const ReconnectCurvesReport&)>;
 
 /// `joins(p, q, report)`: whether end p of segment 1 must join end q of segment 2.
@@ -67,7 +54,8 @@ ReconnectCurvesResult reconnectChecked(const testing::Scenario& s, const Vec3& p
     const int j = rep.partner[i];
     EXPECT_GE(j, 2);
     EXPECT_TRUE(joins(rep.ends[i].position, rep.ends[j].position, rep)) << i << " -> " << j;
-    EXPECT_TRUE(oneCurveHolds(again, rep.ends[i].position, rep.ends[j].position)) << i;
+    EXPECT_TRUE(testing::sameCurveHolds(again, rep.ends[i].position, rep.ends[j].position, *box()))
+        << i;
   }
   std::vector<char> inRegion(box()->vertexCount(), 0);
   for (int v : regionVertices(*box(), r.regionTets).vertices) inRegion[v] = 1;

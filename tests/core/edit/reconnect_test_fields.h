@@ -16,6 +16,7 @@
 #include <functional>
 #include <vector>
 
+#include "core/topology/degenerate_curves.h"
 #include "tests/core/edit/removal_test_fields.h"
 
 namespace tfd::core::testing {
@@ -83,6 +84,22 @@ inline const std::vector<Scenario>& scenarios() {
        [](const Vec3& p, const Vec3& q) { return (p.x() > -0.4) != (q.x() > 0.4); }},
   };
   return s;
+}
+
+/// Whether some curve holds both points (within 1e-6 mean edge lengths of `mesh`: the
+/// extraction's fallback perturbation may move the ends that much, reconnect_verification.h).
+inline bool sameCurveHolds(const DegenerateCurves& curves, const Vec3& a, const Vec3& b,
+                           const TetMesh& mesh) {
+  const double tolerance = 1e-6 * mesh.meanEdgeLength();
+  for (const DegenerateCurve& c : curves.curves()) {
+    bool ha = false, hb = false;
+    for (const Vec3& p : c.points) {
+      ha = ha || (p - a).norm() < tolerance;
+      hb = hb || (p - b).norm() < tolerance;
+    }
+    if (ha && hb) return true;
+  }
+  return false;
 }
 
 }  // namespace tfd::core::testing
