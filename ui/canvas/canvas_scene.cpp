@@ -24,6 +24,9 @@ CanvasScene::CanvasScene(GraphDocument& document, QObject* parent)
 }
 
 CanvasScene::~CanvasScene() {
+  // ~QGraphicsScene deselects the items it deletes and emits selectionChanged when this is a
+  // CanvasScene no more: calling our signal then is undefined (UBSan, editor_gl test).
+  disconnect(this, &QGraphicsScene::selectionChanged, this, &CanvasScene::selectedNodesChanged);
   for (LinkItem* l : links_) l->detach();
 }
 
