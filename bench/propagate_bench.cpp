@@ -121,6 +121,20 @@ void BM_PropagateSphere(benchmark::State& state) {
 }
 void BM_PropagateBox(benchmark::State& state) { run(state, box(static_cast<int>(state.range(0)))); }
 
+/// The per-step counters of the best run, and the mean wall and CPU seconds over `runs` runs.
+void setCookCounters(benchmark::State& state, const PropagateReport& best, double sum, double cpu,
+                     int runs) {
+  state.counters["setup1_s"] = best.firstSetupSeconds;
+  state.counters["solve1_s"] = best.firstSolveSeconds;
+  state.counters["setup2_s"] = best.secondSetupSeconds;
+  state.counters["solve2_s"] = best.secondSolveSeconds;
+  state.counters["best_s"] = best.totalSeconds;
+  state.counters["mean_s"] = sum / std::max(runs, 1);
+  state.counters["cpu_s"] = cpu / std::max(runs, 1);
+  state.counters["it1"] = best.firstIterations;
+  state.counters["it2"] = best.secondIterations;
+}
+
 /// First cook: the mesh is new, so its point-location grid is not built; propagate locates
 /// its two design points itself (core::locatePoints: a scan over the tets, no grid). Each
 /// iteration gets a fresh copy of the mesh (copy and topology build untimed).
@@ -148,15 +162,7 @@ void BM_PropagateSphereFirstCook(benchmark::State& state) {
   state.counters["tets"] = static_cast<double>(cached->tetCount());
   state.counters["locate_s"] = best.constraintSeconds;
   state.counters["assembly_s"] = best.assemblySeconds;
-  state.counters["setup1_s"] = best.firstSetupSeconds;
-  state.counters["solve1_s"] = best.firstSolveSeconds;
-  state.counters["setup2_s"] = best.secondSetupSeconds;
-  state.counters["solve2_s"] = best.secondSolveSeconds;
-  state.counters["best_s"] = best.totalSeconds;
-  state.counters["mean_s"] = sum / std::max(runs, 1);
-  state.counters["cpu_s"] = cpu / std::max(runs, 1);
-  state.counters["it1"] = best.firstIterations;
-  state.counters["it2"] = best.secondIterations;
+  setCookCounters(state, best, sum, cpu, runs);
   state.counters["grid_built"] = gridBuilt;
 }
 
@@ -212,15 +218,7 @@ void BM_PropagateSphereRecook(benchmark::State& state) {
   }
   state.counters["tets"] = static_cast<double>(mesh->tetCount());
   state.counters["assembly_s"] = best.assemblySeconds;
-  state.counters["setup1_s"] = best.firstSetupSeconds;
-  state.counters["solve1_s"] = best.firstSolveSeconds;
-  state.counters["setup2_s"] = best.secondSetupSeconds;
-  state.counters["solve2_s"] = best.secondSolveSeconds;
-  state.counters["best_s"] = best.totalSeconds;
-  state.counters["mean_s"] = sum / std::max(runs, 1);
-  state.counters["cpu_s"] = cpu / std::max(runs, 1);
-  state.counters["it1"] = best.firstIterations;
-  state.counters["it2"] = best.secondIterations;
+  setCookCounters(state, best, sum, cpu, runs);
   state.counters["reused"] = best.reusedSetups;
   state.counters["peak_MB"] = peakRssMegabytes();
 }
