@@ -2,12 +2,15 @@
 #include <QApplication>
 #include <QSurfaceFormat>
 
+#include "apps/tfd/huge_pages.h"
 #include "graph/node_registry.h"
 #include "nodes/register_all.h"
 #include "ui/viewport/gl_format.h"
 #include "ui/window/main_window.h"
 
 int main(int argc, char** argv) {
+  // A cook in the editor touches the same large arrays as one by `tfd` (README, "Huge pages").
+  tfd::cli::restartWithHugePages(argv);
   QSurfaceFormat::setDefaultFormat(tfd::ui::viewportSurfaceFormat());
   QApplication app(argc, argv);
   QApplication::setOrganizationName("tfd");
