@@ -129,8 +129,13 @@ SurfaceMesh polygonizeImplicit(const ImplicitFunction& f, const Vec3& lo, const 
           if (ni == 1 || no == 1) {
             const long lone = ni == 1 ? in[0] : out[0];
             const long* others = ni == 1 ? out : in;
-            addTriangle(crossing(lone, others[0]), crossing(lone, others[1]),
-                        crossing(lone, others[2]), inC, outC);
+            // One crossing per statement: as arguments of one call their order (so the
+            // vertices' numbering, so the remeshed surface) would be the compiler's choice.
+            // This is the order GCC chose when they were arguments, so meshes stay the same.
+            const int c2 = crossing(lone, others[2]);
+            const int c1 = crossing(lone, others[1]);
+            const int c0 = crossing(lone, others[0]);
+            addTriangle(c0, c1, c2, inC, outC);
           } else {
             // Quad through the four crossing edges, in cyclic order.
             const int p0 = crossing(in[0], out[0]), p1 = crossing(in[0], out[1]);

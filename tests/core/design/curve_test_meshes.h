@@ -9,6 +9,7 @@
 
 #include "core/structured_mesh.h"
 #include "core/tet_mesh.h"
+#include "tests/support/random_vec3.h"
 
 namespace tfd::core::testing {
 
@@ -46,7 +47,7 @@ inline std::shared_ptr<const TetMesh> jitteredBox(int n, double jitter, unsigned
   std::uniform_real_distribution<double> u(-1, 1);
   const double h = 2.0 / n;
   for (auto& p : positions) {
-    const Vec3 d(u(rng), u(rng), u(rng));
+    const Vec3 d = test::drawVec3(u, rng);
     if (p.cwiseAbs().maxCoeff() < 1 - 1e-9) p += jitter * h * d;
   }
   return std::make_shared<const TetMesh>(std::move(positions), box->tets());

@@ -12,6 +12,7 @@
 #include "core/edit/reference_field.h"
 #include "core/error.h"
 #include "core/structured_mesh.h"
+#include "tests/support/random_vec3.h"
 
 namespace tfd::core {
 namespace {
@@ -54,8 +55,7 @@ std::shared_ptr<const TetMesh> jittered(int n, unsigned seed) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u(-0.2, 0.2);
   for (std::size_t i = 0; i < p.size(); ++i)
-    if (!box->isBoundaryVertex(static_cast<int>(i)))
-      p[i] += (2.0 / n) * Vec3(u(rng), u(rng), u(rng));
+    if (!box->isBoundaryVertex(static_cast<int>(i))) p[i] += (2.0 / n) * test::drawVec3(u, rng);
   return std::make_shared<const TetMesh>(std::move(p), box->tets());
 }
 

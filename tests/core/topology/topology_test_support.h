@@ -14,6 +14,7 @@
 #include "core/tensor_field.h"
 #include "core/tet_mesh.h"
 #include "core/topology/zheng_pang.h"
+#include "tests/support/random_vec3.h"
 
 namespace tfd::core::topology::testing {
 
@@ -33,7 +34,7 @@ inline std::shared_ptr<const TetMesh> jitteredBox(int n, double lo, double hi, d
   const double h = (hi - lo) / n;
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (box->isBoundaryVertex(int(i))) continue;
-    p[i] += h * Vec3(u(rng), u(rng), u(rng));
+    p[i] += h * test::drawVec3(u, rng);
   }
   return std::make_shared<const TetMesh>(std::move(p), box->tets());
 }
