@@ -31,6 +31,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -39,6 +40,7 @@
 #include <map>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "core/design/propagate.h"
 #include "core/edit/deform_curve.h"
@@ -67,6 +69,27 @@ double peakMegabytes() {
   return 0;
 }
 
+/// FNV-1a over the bytes of the edited field, the region's tets and the curves' points: the
+/// label of a verified 1M result, so that two builds can be checked to give bit-for-bit the
+/// same result (bench/RESULTS.md, branch ballspeed).
+std::string resultHash(const TensorField& field, const std::vector<int>& regionTets,
+                       const DegenerateCurves& curves) {
+  std::uint64_t h = 1469598103934665603ull;
+  auto mix = [&](const void* data, std::size_t bytes) {
+    const auto* b = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < bytes; ++i) h = (h ^ b[i]) * 1099511628211ull;
+  };
+  mix(field.values().data(), field.values().size() * sizeof(Tensor));
+  mix(regionTets.data(), regionTets.size() * sizeof(int));
+  for (std::size_t c = 0; c < curves.size(); ++c) {
+    const DegenerateCurve& curve = curves.curve(int(c));
+    mix(curve.points.data(), curve.points.size() * sizeof(Vec3));
+  }
+  char text[32];
+  std::snprintf(text, sizeof text, "hash %016llx", static_cast<unsigned long long>(h));
+  return text;
+}
+
 const TensorField& loopField1M() {
   static const TensorField field =
       testing::designedField(makeBoxMesh(55, 55, 55, Vec3(-1, -1, -1), Vec3(1, 1, 1)),
@@ -93,6 +116,7 @@ void RemoveLoop1M(benchmark::State& state) {
     }
   }
   state.counters["verified"] = verified;
+  if (verified) state.SetLabel(resultHash(last.field, last.regionTets, last.curves));
   if (!verified) state.counters["failed_region_tets"] = double(failedRegion);
   state.counters["tets"] = double(field.mesh().tetCount());
   state.counters["region_tets"] = double(last.report.regionTets);
@@ -137,6 +161,7 @@ void RemoveLoopBall1M(benchmark::State& state) {
     }
   }
   state.counters["verified"] = verified;
+  if (verified) state.SetLabel(resultHash(last.field, last.regionTets, last.curves));
   state.counters["tets"] = double(field.mesh().tetCount());
   state.counters["region_tets"] = double(last.report.regionTets);
   state.counters["free_vertices"] = double(last.report.freeVertices);
@@ -178,6 +203,7 @@ void DeformCurve1M(benchmark::State& state) {
     }
   }
   state.counters["verified"] = verified;
+  if (verified) state.SetLabel(resultHash(last.field, last.regionTets, last.curves));
   state.counters["tets"] = double(field.mesh().tetCount());
   state.counters["region_tets"] = double(last.report.regionTets);
   state.counters["solved_vertices"] = double(last.report.solvedVertices);
@@ -288,6 +314,7 @@ void ReconnectLines1M(benchmark::State& state) {
     }
   }
   state.counters["verified"] = verified;
+  if (verified) state.SetLabel(resultHash(last.field, last.regionTets, last.curves));
   state.counters["tets"] = double(field.mesh().tetCount());
   state.counters["region_tets"] = double(last.report.regionTets);
   state.counters["sheet_tets"] = double(last.report.sheetTets);
@@ -801,6 +828,7 @@ void RemoveTwoLoops1M(benchmark::State& state) {
     }
   }
   state.counters["verified"] = verified;
+  if (verified) state.SetLabel(resultHash(last.field, last.regionTets, last.curves));
   state.counters["tets"] = double(field.mesh().tetCount());
   state.counters["region_tets"] = double(last.regionTets.size());
   state.counters["step2_region_tets"] = double(last.report.regionTets);

@@ -49,13 +49,14 @@ class Propagation {
                         }
                       });
     visited_.assign(tets, 0);
+    shared_.assign(tets, 0);
     hasU_.assign(region.vertices.size(), 0);
     known_.assign(region.edges.size(), 0);
     out_.reference.assign(region.vertices.size(), Vec3::Zero());
     out_.jumps.assign(region.edges.size(), 0.0);
   }
 
-  ReferenceField run(int seed, const Vec3& seedReference) {
+  ReferenceField run(int seed, const Vec3& seedReference, bool measureHolonomy) {
     out_.seedVertex = region_.vertices[seed];
     out_.reference[seed] = initialReference(n_[seed], seedReference);
     hasU_[seed] = 1;
@@ -93,7 +94,7 @@ class Propagation {
       add(best);
       ++count;
     }
-    out_.maxHolonomyDefect = maxHolonomyDefect();
+    if (measureHolonomy) out_.maxHolonomyDefect = maxHolonomyDefect();
     return std::move(out_);
   }
 
@@ -120,11 +121,8 @@ class Propagation {
     return -1;
   }
 
-  int shared(int t) const {
-    int s = 0;
-    for (int nb : tets_[t].nb) s += nb >= 0 && visited_[nb];
-    return s;
-  }
+  /// Number of the tet's faces shared with visited tets.
+  int shared(int t) const { return shared_[t]; }
 
   /// Whether adding t keeps the visited set a ball: its contact with the set is a disk.
   bool simple(int t) const {
@@ -227,8 +225,11 @@ class Propagation {
         progress = true;
       }
     }
-    for (int nb : r.nb)
-      if (nb >= 0 && !visited_[nb]) queue_[std::min(shared(nb), 3) - 1].push_back(nb);
+    for (int nb : r.nb) {
+      if (nb < 0) continue;
+      ++shared_[nb];  // face adjacency is symmetric: t is one of nb's neighbours
+      if (!visited_[nb]) queue_[std::min(shared(nb), 3) - 1].push_back(nb);
+    }
   }
 
   const TetMesh& mesh_;
@@ -236,6 +237,9 @@ class Propagation {
   const std::vector<Vec3>& n_;
   std::vector<RegionTet> tets_;
   std::vector<char> visited_, hasU_, known_;
+  /// Per tet, its faces shared with visited tets (kept as tets join, instead of reading the
+  /// four neighbours' flags: a random access each).
+  std::vector<unsigned char> shared_;
   /// Candidates by the number of faces they share with the visited set (when queued): those
   /// sharing most are taken first, which keeps the front compact (fewer tets that could only
   /// join by breaking the ball). Entries may be stale; simple() decides on the current state.
@@ -251,14 +255,14 @@ double sphericalTriangleArea(const Vec3& a, const Vec3& b, const Vec3& c) {
 
 ReferenceField referenceField(const TetMesh& mesh, const RegionComplex& region,
                               const std::vector<Vec3>& directions, int seed,
-                              const Vec3& seedReference) {
+                              const Vec3& seedReference, bool measureHolonomy) {
   if (directions.size() != region.vertices.size()) {
     throw Error("reference field: one direction per region vertex expected");
   }
   if (seed < 0 || seed >= static_cast<int>(region.vertices.size())) {
     throw Error("reference field: the seed is not a region vertex");
   }
-  return Propagation(mesh, region, directions).run(seed, seedReference);
+  return Propagation(mesh, region, directions).run(seed, seedReference, measureHolonomy);
 }
 
 }  // namespace tfd::core

@@ -43,7 +43,7 @@ struct ReferenceField {
   int nonBallSteps = 0;
   /// Worst |g_ab + g_bc + g_ca − Ω| over the region's triangles: rounding level, unless a tet
   /// maps to a sphere-covering tetrahedron (N winds around a point) or a non-ball step broke
-  /// consistency.
+  /// consistency. A diagnostic (four spherical areas per tet): 0 unless asked for.
   double maxHolonomyDefect = 0;
 };
 
@@ -54,8 +54,9 @@ inline double orientedJump(double stored, int from, int to) { return from < to ?
 /// `seed` is a local vertex; U there is `seedReference` projected ⊥ N (or, when that is
 /// (nearly) parallel to N, the coordinate axis least aligned with N). Throws core::Error when
 /// the region is not face-connected or two adjacent directions are (nearly) opposite.
+/// `measureHolonomy`: whether to compute maxHolonomyDefect.
 ReferenceField referenceField(const TetMesh& mesh, const RegionComplex& region,
                               const std::vector<Vec3>& directions, int seed,
-                              const Vec3& seedReference);
+                              const Vec3& seedReference, bool measureHolonomy = true);
 
 }  // namespace tfd::core

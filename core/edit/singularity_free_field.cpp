@@ -170,7 +170,7 @@ TensorField singularityFreeField(const TensorField& field, const RegionComplex& 
   progress.report(0.2, "reference field and jumps");
   const int seed = centralVertex(mesh, region);
   const ReferenceField ref =
-      referenceField(mesh, region, directions, seed, eig[seed].vectors.col(1));
+      referenceField(mesh, region, directions, seed, eig[seed].vectors.col(1), report != nullptr);
   r.nonBallSteps = ref.nonBallSteps;
   r.maxHolonomyDefect = ref.maxHolonomyDefect;
   progress.throwIfCancelled();

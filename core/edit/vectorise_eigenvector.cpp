@@ -4,12 +4,13 @@
 #include <tbb/parallel_for.h>
 
 #include <cmath>
-#include <queue>
+#include <functional>
 #include <string>
 #include <tuple>
 
 #include "core/edit/region_complex.h"
 #include "core/error.h"
+#include "core/region/bucket_queue.h"
 
 namespace tfd::core {
 namespace {
@@ -25,13 +26,17 @@ double isolation(const EigenDecomposition& d, DegenerateType type, double norm) 
 void orientAlongTree(const RegionComplex& region, int seed, std::vector<Vec3>& dirs) {
   const int n = static_cast<int>(region.vertices.size());
   std::vector<char> done(n, 0);
-  // (weight, −vertex, parent): the largest weight first, then the smallest vertex id.
+  // (weight, −vertex, parent): the largest weight first, then the smallest vertex id (the
+  // order of std::priority_queue<Entry>). Bucketed by 1 − weight, which does not decrease
+  // along that order: most weights are close to 1 in a smooth field.
   using Entry = std::tuple<double, int, int>;
-  std::priority_queue<Entry> queue;
+  OrderedBucketQueue<Entry, std::less<>> queue;
   const auto push = [&](int from) {
     for (int k = region.start[from]; k < region.start[from + 1]; ++k) {
       const int to = region.neighbour[k];
-      if (!done[to]) queue.emplace(std::abs(dirs[from].dot(dirs[to])), -to, from);
+      if (done[to]) continue;
+      const double weight = std::abs(dirs[from].dot(dirs[to]));
+      queue.emplace(logBucket(1 - weight), Entry(weight, -to, from));
     }
   };
   done[seed] = 1;

@@ -1,5 +1,7 @@
 #include "core/region/ball_check.h"
 
+#include <tbb/parallel_invoke.h>
+
 #include <algorithm>
 #include <cstdint>
 #include <numeric>
@@ -70,65 +72,70 @@ BallCheck checkTopologicalBall(const TetMesh& mesh, std::span<const int> tetSpan
   std::vector<int> index(mesh.tetCount(), -1);
   for (std::size_t i = 0; i < tets.size(); ++i)
     if (index[tets[i]] < 0) index[tets[i]] = int(i);
-  r.components = tetComponents(mesh, tets, index);
+  // The boundary analysis runs beside the face-connected pieces (a flood through the region):
+  // independent, each deterministic.
+  int badEdges = 0, pinched = 0;
+  const auto boundary = [&] {
+    // Boundary faces (oriented or not does not matter for the counts).
+    std::vector<int> faces;
+    for (int t : tets) {
+      for (int f : mesh.tetFaces()[t]) {
+        const auto& ft = mesh.faceTets()[f];
+        const int other = ft[0] == t ? ft[1] : ft[0];
+        if (other >= 0 && index[other] >= 0) continue;
+        faces.push_back(f);
+        r.surfaceFaces += other < 0;
+      }
+    }
+    r.boundaryFaces = int(faces.size());
+    // Edges and vertices of the boundary faces as sorted (key, face) lists: each run of equal
+    // keys is the faces around one edge or vertex (cheaper than hash maps of lists).
+    std::vector<std::pair<std::uint64_t, int>> edgeFaces;  // edge -> boundary faces
+    std::vector<std::pair<int, int>> vertexFaces;          // vertex -> boundary faces
+    edgeFaces.reserve(3 * faces.size());
+    vertexFaces.reserve(3 * faces.size());
+    for (std::size_t i = 0; i < faces.size(); ++i) {
+      const auto& f = mesh.faces()[faces[i]];
+      for (int k = 0; k < 3; ++k) {
+        edgeFaces.emplace_back(edgeKey(f[k], f[(k + 1) % 3]), int(i));
+        vertexFaces.emplace_back(f[k], int(i));
+      }
+    }
+    std::sort(edgeFaces.begin(), edgeFaces.end());
+    std::sort(vertexFaces.begin(), vertexFaces.end());
+    int edgeCount = 0;
+    UnionFind surface(faces.size());
+    for (std::size_t i = 0, j; i < edgeFaces.size(); i = j) {
+      for (j = i + 1; j < edgeFaces.size() && edgeFaces[j].first == edgeFaces[i].first; ++j)
+        surface.join(edgeFaces[i].second, edgeFaces[j].second);
+      ++edgeCount;
+      badEdges += j - i != 2;
+    }
+    r.boundaryComponents = faces.empty() ? 0 : surface.roots();
 
-  // Boundary faces (oriented or not does not matter for the counts).
-  std::vector<int> faces;
-  for (int t : tets) {
-    for (int f : mesh.tetFaces()[t]) {
-      const auto& ft = mesh.faceTets()[f];
-      const int other = ft[0] == t ? ft[1] : ft[0];
-      if (other >= 0 && index[other] >= 0) continue;
-      faces.push_back(f);
-      r.surfaceFaces += other < 0;
+    // Pinched vertices: the faces around a vertex must form one fan (connected through edges
+    // at that vertex).
+    int vertexCount = 0;
+    std::vector<std::pair<int, int>> spokes;  // (other vertex of an edge at v, fan index)
+    for (std::size_t i = 0, j; i < vertexFaces.size(); i = j) {
+      const int v = vertexFaces[i].first;
+      for (j = i + 1; j < vertexFaces.size() && vertexFaces[j].first == v; ++j) {
+      }
+      ++vertexCount;
+      spokes.clear();
+      for (std::size_t k = i; k < j; ++k)
+        for (int w : mesh.faces()[faces[vertexFaces[k].second]])
+          if (w != v) spokes.emplace_back(w, int(k - i));
+      std::sort(spokes.begin(), spokes.end());
+      UnionFind fan(j - i);
+      for (std::size_t k = 1; k < spokes.size(); ++k)
+        if (spokes[k].first == spokes[k - 1].first)
+          fan.join(spokes[k].second, spokes[k - 1].second);
+      pinched += fan.roots() != 1;
     }
-  }
-  r.boundaryFaces = int(faces.size());
-  // Edges and vertices of the boundary faces as sorted (key, face) lists: each run of equal
-  // keys is the faces around one edge or vertex (cheaper than hash maps of lists).
-  std::vector<std::pair<std::uint64_t, int>> edgeFaces;  // edge -> boundary faces
-  std::vector<std::pair<int, int>> vertexFaces;          // vertex -> boundary faces
-  edgeFaces.reserve(3 * faces.size());
-  vertexFaces.reserve(3 * faces.size());
-  for (std::size_t i = 0; i < faces.size(); ++i) {
-    const auto& f = mesh.faces()[faces[i]];
-    for (int k = 0; k < 3; ++k) {
-      edgeFaces.emplace_back(edgeKey(f[k], f[(k + 1) % 3]), int(i));
-      vertexFaces.emplace_back(f[k], int(i));
-    }
-  }
-  std::sort(edgeFaces.begin(), edgeFaces.end());
-  std::sort(vertexFaces.begin(), vertexFaces.end());
-  int badEdges = 0, edgeCount = 0;
-  UnionFind surface(faces.size());
-  for (std::size_t i = 0, j; i < edgeFaces.size(); i = j) {
-    for (j = i + 1; j < edgeFaces.size() && edgeFaces[j].first == edgeFaces[i].first; ++j)
-      surface.join(edgeFaces[i].second, edgeFaces[j].second);
-    ++edgeCount;
-    badEdges += j - i != 2;
-  }
-  r.boundaryComponents = faces.empty() ? 0 : surface.roots();
-
-  // Pinched vertices: the faces around a vertex must form one fan (connected through edges
-  // at that vertex).
-  int pinched = 0, vertexCount = 0;
-  std::vector<std::pair<int, int>> spokes;  // (other vertex of an edge at v, fan index)
-  for (std::size_t i = 0, j; i < vertexFaces.size(); i = j) {
-    const int v = vertexFaces[i].first;
-    for (j = i + 1; j < vertexFaces.size() && vertexFaces[j].first == v; ++j) {
-    }
-    ++vertexCount;
-    spokes.clear();
-    for (std::size_t k = i; k < j; ++k)
-      for (int w : mesh.faces()[faces[vertexFaces[k].second]])
-        if (w != v) spokes.emplace_back(w, int(k - i));
-    std::sort(spokes.begin(), spokes.end());
-    UnionFind fan(j - i);
-    for (std::size_t k = 1; k < spokes.size(); ++k)
-      if (spokes[k].first == spokes[k - 1].first) fan.join(spokes[k].second, spokes[k - 1].second);
-    pinched += fan.roots() != 1;
-  }
-  r.eulerCharacteristic = vertexCount - edgeCount + int(faces.size());
+    r.eulerCharacteristic = vertexCount - edgeCount + int(faces.size());
+  };
+  tbb::parallel_invoke([&] { r.components = tetComponents(mesh, tets, index); }, boundary);
 
   if (r.components != 1) {
     r.problem = "the tets form " + std::to_string(r.components) + " separate pieces";

@@ -1,11 +1,17 @@
 #include "core/region/ball_region.h"
 
+#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
+
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
+#include <exception>
 #include <functional>
 #include <limits>
 #include <memory>
+#include <thread>
 
 #include "core/error.h"
 #include "core/region/bucket_queue.h"
@@ -27,35 +33,79 @@ double bucketWidth(const TetMesh& mesh) { return std::max(0.25 * mesh.meanEdgeLe
 /// edge), so once every key ≤ P is popped, a distance ≤ P − margin is final. Region growing
 /// asks only for the tets next to its set, so the front stays one layer ahead of it and the
 /// cost follows the grown set, not the bound.
+///
+/// The same rule lets the front run ahead in a thread of its own (run()) while the growth reads
+/// distances as they become final (settledAt()): the front publishes P − margin after each
+/// step, and a distance read at most that is final. The pops, and so every distance, are those
+/// of the sequential run; the growth only waits for them.
 class DistanceFront {
  public:
+  /// `margin`: frontMargin(mesh).
   DistanceFront(const TetMesh& mesh, const TetRows& rows, std::span<const int> sources,
-                double bound)
+                double bound, double margin)
       : rows_(rows),
         bound_(bound),
-        d_(mesh.tetCount(), kInf),
-        source_(mesh.tetCount(), -1),
+        margin_(margin),
+        step_(std::max(mesh.meanEdgeLength(), 1e-300)),
+        label_(mesh.tetCount()),
         heap_(bucketWidth(mesh)) {
-    double longest = 0;
-    for (const auto& e : mesh.edges())
-      longest = std::max(longest, (mesh.positions()[e[0]] - mesh.positions()[e[1]]).norm());
-    margin_ = 0.5 * longest;
-    step_ = std::max(mesh.meanEdgeLength(), 1e-300);
     for (int s : sources) {
-      if (d_[s] == 0) continue;
-      d_[s] = 0, source_[s] = s;
+      if (label_[s].d == 0) continue;
+      label_[s] = {0.0, s};
       heap_.emplace(0.0, s);
     }
   }
 
   /// The final distance of tet t (infinity beyond the bound), advancing the front as needed.
   double at(int t, const Progress& progress) {
-    while (!(d_[t] <= popped_ - margin_) && !heap_.empty())
+    while (!(label_[t].d <= popped_ - margin_) && !heap_.empty())
       advance(std::max(popped_, heap_.top().first) + step_, progress);
-    return d_[t];
+    return label_[t].d;
   }
   void settleAll(const Progress& progress) { advance(kInf, progress); }
-  std::vector<double> release() { return std::move(d_); }
+  ~DistanceFront() { stop(); }
+
+  /// Advances the front in a thread of its own, for settledAt().
+  void run(const Progress& progress) {
+    thread_ = std::thread([this, &progress] {
+      try {
+        while (!stopping_.load(std::memory_order_relaxed) && !heap_.empty()) {
+          advance(std::max(popped_, heap_.top().first) + step_, progress);
+          final_.store(popped_ - margin_, std::memory_order_release);
+        }
+      } catch (...) {
+        error_ = std::current_exception();
+        failed_.store(true, std::memory_order_release);
+      }
+      final_.store(kInf, std::memory_order_release);
+    });
+  }
+  /// The final distance of tet t, waiting for the front of run() to settle it; rethrows what
+  /// stopped the front (a cancellation).
+  double settledAt(int t) {
+    for (;;) {
+      const double bound = final_.load(std::memory_order_acquire);
+      if (failed_.load(std::memory_order_acquire)) {
+        stop();
+        std::rethrow_exception(error_);
+      }
+      // Distances only decrease and a final one was stored before `bound` was published.
+      const double d = std::atomic_ref<double>(label_[t].d).load(std::memory_order_relaxed);
+      if (d <= bound) return d;
+      std::this_thread::yield();
+    }
+  }
+  /// Stops and joins the thread of run(), if any.
+  void stop() {
+    stopping_.store(true, std::memory_order_relaxed);
+    if (thread_.joinable()) thread_.join();
+  }
+  /// The distance of every tet (settleAll() first).
+  std::vector<double> release() const {
+    std::vector<double> d(label_.size());
+    for (std::size_t t = 0; t < d.size(); ++t) d[t] = label_[t].d;
+    return d;
+  }
 
  private:
   /// Pops every key ≤ upTo.
@@ -63,14 +113,24 @@ class DistanceFront {
     while (!heap_.empty() && heap_.top().first <= upTo) {
       const auto [dt, t] = heap_.top();
       heap_.pop();
-      if (dt > d_[t]) continue;
+      if (!heap_.empty()) {  // the next pop's tet, loaded while this one is relaxed
+        const int next = heap_.top().second;
+        __builtin_prefetch(&label_[next]);
+        rows_.prefetch(next);
+      }
+      const Label here = label_[t];
+      if (dt > here.d) continue;
       if (++steps_ % 8192 == 0) progress.throwIfCancelled();
-      const Vec3 origin = rows_[source_[t]].centroid;
+      const Vec3 origin = rows_[here.source].centroid;
       for (int n : rows_[t].neighbours) {
-        if (n < 0 || d_[n] == 0) continue;
+        if (n < 0) continue;
+        Label& there = label_[n];
+        if (there.d == 0) continue;
         const double dn = (rows_[n].centroid - origin).norm();
-        if (dn <= bound_ && dn < d_[n]) {
-          d_[n] = dn, source_[n] = source_[t];
+        if (dn <= bound_ && dn < there.d) {
+          // Read by settledAt() while run() writes: an atomic store (a plain one on x86).
+          std::atomic_ref<double>(there.d).store(dn, std::memory_order_relaxed);
+          there.source = here.source;
           heap_.emplace(dn, n);
         }
       }
@@ -79,12 +139,36 @@ class DistanceFront {
   }
 
   const TetRows& rows_;
-  double bound_, margin_ = 0, step_ = 0, popped_ = -kInf;
-  std::vector<double> d_;
-  std::vector<int> source_;
+  /// A tet's distance and the source it is measured to, side by side: a pop and a
+  /// relaxation read both (one cache miss on a random tet id instead of two).
+  struct Label {
+    double d = kInf;
+    int source = -1;
+  };
+  double bound_, margin_, step_, popped_ = -kInf;
+  std::vector<Label> label_;
   BucketQueue heap_;
   std::size_t steps_ = 0;
+  std::thread thread_;
+  std::atomic<double> final_ = -kInf;  ///< run(): every distance ≤ this is final
+  std::atomic<bool> stopping_ = false, failed_ = false;
+  std::exception_ptr error_;
 };
+
+/// Half the longest edge: at least the centroid distance of any two face neighbours.
+double frontMargin(const TetMesh& mesh) {
+  double longest = 0;
+  for (const auto& e : mesh.edges())
+    longest = std::max(longest, (mesh.positions()[e[0]] - mesh.positions()[e[1]]).norm());
+  return 0.5 * longest;
+}
+
+/// Whether a second thread may run the distance front beside the growth (not when the
+/// process, or the calling task arena, is limited to one thread).
+bool frontThreadAllowed() {
+  return tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism) > 1 &&
+         tbb::this_task_arena::max_concurrency() > 1;
+}
 
 /// Adds tets nearest first while they keep the set a ball: candidates are the face neighbours
 /// of the set; a candidate that fails the simple-tet test waits ("deferred") until a tet next
@@ -129,6 +213,12 @@ class Grower {
       if (++steps % 4096 == 0) progress.throwIfCancelled();
       const auto [d, t] = heap_.top();
       heap_.pop();
+      if (!heap_.empty()) {  // the next candidate, loaded while this one is tested and added
+        const int next = heap_.top().second;
+        __builtin_prefetch(&state_[next]);
+        __builtin_prefetch(&forbidden_[next]);
+        set_.prefetch(next);
+      }
       if (state_[t] != Queued || set_.contains(t)) continue;
       if (forbidden_[t]) {
         state_[t] = Deferred;  // never re-queued: only non-forbidden tets are re-checked
@@ -235,7 +325,7 @@ std::string shrink(TetSet& set, const std::vector<unsigned char>& isSeed,
 std::vector<double> tetDistances(const TetMesh& mesh, std::span<const int> sources, double bound,
                                  const Progress& progress) {
   const TetRows rows(mesh);
-  DistanceFront front(mesh, rows, sources, bound);
+  DistanceFront front(mesh, rows, sources, bound, frontMargin(mesh));
   front.settleAll(progress);
   return front.release();
 }
@@ -260,7 +350,8 @@ BallRegion growBallRegion(const TetMesh& mesh, std::span<const int> seedSpan,
   const double bound1 = std::max(options.distance, 8 * mesh.meanEdgeLength());
   TetSet set(mesh);
   const TetRows& rows = set.rows();
-  DistanceFront d1(mesh, rows, seeds, bound1);
+  const double margin = frontMargin(mesh);
+  DistanceFront d1(mesh, rows, seeds, bound1, margin);
   Vec3 centre = Vec3::Zero();
   for (int s : seeds) centre += rows[s].centroid;
   centre /= double(seeds.size());
@@ -303,10 +394,17 @@ BallRegion growBallRegion(const TetMesh& mesh, std::span<const int> seedSpan,
   // Step 3.
   if (options.distance > 0) {
     const std::vector<int> core = set.tets();
-    DistanceFront front(mesh, rows, core, options.distance);
-    front.settleAll(progress);
-    const std::vector<double> d3 = front.release();
-    Grower grower(set, forbidden, [&](int t) { return d3[t]; });
+    // The front runs ahead in a second thread while the growth waits for final distances
+    // (the rows of the core, read by both, are filled: every core tet joined in step 1).
+    DistanceFront front(mesh, rows, core, options.distance, margin);
+    const bool parallel = frontThreadAllowed();
+    if (parallel) {
+      front.run(progress);
+    } else {
+      front.settleAll(progress);
+    }
+    Grower grower(set, forbidden,
+                  [&](int t) { return parallel ? front.settledAt(t) : front.at(t, progress); });
     grower.queueNeighboursOfSet(core);
     grower.run([] { return false; }, progress);
     r.growOutStop = "added " + std::to_string(grower.added()) + " tets out to distance " +

@@ -1,12 +1,17 @@
-// The bucketed queue of region growing (core/region/bucket_queue.h) pops in exactly the order
-// of std::priority_queue with std::greater (the order the regions were grown in before it), for
-// interleaved pushes and pops with keys below the current bucket, ties and repeats.
+// The bucketed queues of core/region/bucket_queue.h pop in exactly the order of
+// std::priority_queue: with std::greater on (key, id) (the order the regions were grown in
+// before it), and the max-queue of (weight, −vertex, parent) of the spanning tree that orients
+// an eigenvector, bucketed by logBucket(1 − weight); for interleaved pushes and pops with keys
+// below the current bucket, ties and repeats.
 #include "core/region/bucket_queue.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <functional>
 #include <queue>
 #include <random>
+#include <tuple>
 
 namespace tfd::core {
 namespace {
@@ -54,6 +59,47 @@ TEST(BucketQueue, PopsInThePriorityQueueOrder) {
     far.pop();
   }
   EXPECT_TRUE(far.empty());
+}
+
+TEST(BucketQueue, LogBucketsKeepTheMaxQueueOrderOfTheSpanningTree) {
+  // Weights |cos| mostly close to 1 (a smooth field), some far from it, exact ties, and the
+  // rounding cases 1 − w < 0 and w = 0.
+  using Entry = std::tuple<double, int, int>;
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::priority_queue<Entry> reference;
+  OrderedBucketQueue<Entry, std::less<>> queue;
+  int pops = 0;
+  for (int step = 0; step < 30000; ++step) {
+    if (reference.empty() || u(rng) < 0.55) {
+      double w = 1 - std::pow(10.0, -12 * u(rng));
+      if (u(rng) < 0.1) w = u(rng);
+      if (u(rng) < 0.05) w = std::floor(w * 1000) / 1000;
+      if (u(rng) < 0.01) w = u(rng) < 0.5 ? 1 + 1e-16 * 2 : 0.0;
+      const Entry e(w, -int(rng() % 300), int(rng() % 300));
+      reference.push(e);
+      queue.emplace(logBucket(1 - w), e);
+    } else {
+      ASSERT_EQ(queue.top(), reference.top()) << "pop " << pops;
+      queue.pop(), reference.pop();
+      ++pops;
+    }
+    ASSERT_EQ(queue.empty(), reference.empty());
+  }
+  while (!reference.empty()) {
+    ASSERT_EQ(queue.top(), reference.top());
+    queue.pop(), reference.pop();
+  }
+  EXPECT_TRUE(queue.empty());
+  EXPECT_GT(pops, 10000);
+  // Non-decreasing in the key, over many orders of magnitude.
+  std::size_t last = 0;
+  for (double k = 1e-20; k < 4; k *= 1.01) {
+    EXPECT_GE(logBucket(k), last) << k;
+    last = logBucket(k);
+  }
+  EXPECT_EQ(logBucket(-1e-17), 0u);
+  EXPECT_GT(logBucket(1.0), logBucket(0.5));
 }
 
 }  // namespace
