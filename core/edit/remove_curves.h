@@ -70,6 +70,9 @@ struct RemoveCurvesReport {
   /// Regrowths of the region away from sign conflicts of the non-repeating eigenvector (places
   /// where it repeats that no extracted curve covers), and the conflicting edges avoided.
   int conflictRegrowths = 0, conflictEdges = 0;
+  /// Regrowths of the region away from faces of its boundary where the held values of the
+  /// angle of §6.3 cannot lift continuously (core/edit/angle_defects.h), and those faces.
+  int defectRegrowths = 0, defectFaces = 0;
   /// Retries that kept one more ring of tets away from the other curves (after a new curve or
   /// a piece of a target appeared in the region).
   int widenings = 0;
