@@ -7,6 +7,7 @@
 #include <limits>
 #include <optional>
 
+#include "core/edit/angle_defects.h"
 #include "core/edit/edit_driver.h"
 #include "core/edit/edit_verification.h"
 #include "core/edit/remove_two_loops.h"
@@ -21,8 +22,10 @@
 namespace tfd::core {
 namespace {
 
-/// Regrowths of one try around sign conflicts before the conflict is left to fail the try.
+/// Regrowths of one removal around sign conflicts, and around angle defects, before they are
+/// left to fail the try.
 constexpr int kConflictRegrowths = 8;
+constexpr int kDefectRegrowths = 8;
 
 /// Shortest distance between the points of `a` and the polyline of `b`.
 double curveDistance(const DegenerateCurve& a, const DegenerateCurve& b) {
@@ -63,33 +66,55 @@ Targets resolveTargets(const TetMesh& mesh, const DegenerateCurves& all,
   return t;
 }
 
-/// Seeds: the tets holding the targets and every tet around their vertices.
-std::vector<int> seedTets(const TetMesh& mesh, const Targets& targets) {
+/// The tets holding the targets' points, ascending.
+std::vector<int> targetTets(const TetMesh& mesh, const Targets& targets) {
   std::vector<int> tets;
   for (const DegenerateCurve* c : targets.curves) {
     const std::vector<int> own = curveSourceTets(mesh, *c);
     tets.insert(tets.end(), own.begin(), own.end());
   }
-  return withNeighbourTets(mesh, tets);
+  std::sort(tets.begin(), tets.end());
+  tets.erase(std::unique(tets.begin(), tets.end()), tets.end());
+  return tets;
 }
 
-/// Owner code of tets forbidden around a sign-conflict edge: −2 − edge id (curves are ≥ 0).
+/// Seeds: the tets holding the targets and every tet around their vertices.
+std::vector<int> seedTets(const TetMesh& mesh, const Targets& targets) {
+  return withNeighbourTets(mesh, targetTets(mesh, targets));
+}
+
+/// Owner code of tets forbidden around a sign-conflict edge: −2 − edge id (curves are ≥ 0),
+/// and around an angle-defect face: −2 − edge count − face id.
 int conflictOwner(int edge) { return -2 - edge; }
+int defectOwner(const TetMesh& mesh, int face) {
+  return -2 - static_cast<int>(mesh.edges().size()) - face;
+}
 
 [[noreturn]] void refuseCut(const TetMesh& mesh, const DegenerateCurves& all,
                             const Targets& targets, DegenerateType type, int owner) {
+  const int edgeCount = static_cast<int>(mesh.edges().size());
   if (owner <= -2) {
-    const auto& ends = mesh.edges()[-2 - owner];
-    const Vec3 at = 0.5 * (mesh.positions()[ends[0]] + mesh.positions()[ends[1]]);
+    const bool defect = -2 - owner >= edgeCount;
+    Vec3 at = Vec3::Zero();
+    if (defect) {
+      for (int v : mesh.faces()[-2 - edgeCount - owner]) at += mesh.positions()[v] / 3;
+    } else {
+      for (int v : mesh.edges()[-2 - owner]) at += mesh.positions()[v] / 2;
+    }
     std::string names;
     for (const DegenerateCurve* c : targets.curves)
       names += (names.empty() ? "" : " and ") + describeCurve(*c);
-    throw RemovalRefused(
-        "no ball region around " + names + " avoids the place near (" + editNumber(at.x()) + ", " +
-        editNumber(at.y()) + ", " + editNumber(at.z()) + ") where the " +
-        (type == DegenerateType::Linear ? "major" : "minor") +
-        " eigenvector cannot be oriented (a degenerate point of the other type that the mesh "
-        "does not resolve into a curve)");
+    const std::string place = "no ball region around " + names + " avoids the place near (" +
+                              editNumber(at.x()) + ", " + editNumber(at.y()) + ", " +
+                              editNumber(at.z()) + ") where the ";
+    if (defect)
+      throw RemovalRefused(place +
+                           "medium eigenvector turns by half a turn around a face of the region's "
+                           "boundary (a degenerate point of the targets' type that the mesh does "
+                           "not resolve into a curve, §6.3 cannot hold it fixed)");
+    throw RemovalRefused(place + (type == DegenerateType::Linear ? "major" : "minor") +
+                         " eigenvector cannot be oriented (a degenerate point of the other type "
+                         "that the mesh does not resolve into a curve)");
   }
   const DegenerateCurve& other = all.curve(owner);
   double d = std::numeric_limits<double>::infinity();
@@ -144,6 +169,10 @@ std::vector<std::string> RemoveCurvesReport::lines() const {
   if (conflictRegrowths > 0)
     flowLine += " (region grown again " + std::to_string(conflictRegrowths) + " times around " +
                 std::to_string(conflictEdges) + " conflicting edges)";
+  if (defectRegrowths > 0)
+    flowLine += "; region grown again " + std::to_string(defectRegrowths) + " times around " +
+                std::to_string(defectFaces) +
+                " boundary faces where the medium eigenvector turns by half a turn";
   out.push_back(flowLine);
   std::string t = "tries: " + std::to_string(tries.size());
   if (widenings > 0)
@@ -176,6 +205,8 @@ RemoveCurvesResult removeCurves(const TensorField& field, const RemoveCurvesOpti
   std::vector<unsigned char>& forbidden = forbid.flag;
   std::vector<int>& owner = forbid.owner;
   const std::vector<int> seeds = seedTets(mesh, targets);
+  const std::vector<int> ownTets = targetTets(mesh, targets);
+  const std::vector<unsigned char> isSeed = tetFlags(mesh, seeds);
   for (int s : seeds)
     if (forbidden[s]) refuseCut(mesh, all, targets, type, owner[s]);
 
@@ -220,6 +251,28 @@ RemoveCurvesResult removeCurves(const TensorField& field, const RemoveCurvesOpti
         ++report.conflictRegrowths;
         report.conflictEdges += vec.signConflicts;
         return TryOutcome::Again;
+      }
+      const AngleDefects defects = angleDefects(field, complex, vec, rv.held, ownTets);
+      if (!defects.faces.empty() && report.defectRegrowths < kDefectRegrowths) {
+        // §6.3 needs held values of the angle θ that lift continuously (Equation 5): a
+        // degenerate point of the targets' type on the held boundary, or a surface patch around
+        // which the medium eigenvector winds, would leave a seam from which the solved θ has a
+        // singular line. The tets around those faces are forbidden and the region grows again,
+        // unless that would take a seed (the region must hold the seeds: such a defect is left
+        // to the verification, as before this check).
+        std::vector<std::pair<int, int>> added;  // (tet, face)
+        for (int f : defects.faces)
+          for (int v : mesh.faces()[f])
+            for (int n : mesh.vertexTets(v))
+              if (!forbidden[n]) added.emplace_back(n, f);
+        const bool takesSeed = std::any_of(added.begin(), added.end(),
+                                           [&](const auto& a) { return isSeed[a.first] != 0; });
+        if (!added.empty() && !takesSeed) {
+          for (const auto& [t, f] : added) forbid.add(t, defectOwner(mesh, f));
+          ++report.defectRegrowths;
+          report.defectFaces += static_cast<int>(defects.faces.size());
+          return TryOutcome::Again;
+        }
       }
       report.flow = boundaryFlow(mesh, region.tets, vec);
       report.signConflicts = vec.signConflicts;

@@ -14,7 +14,9 @@
 // conflicts: a degenerate point of the other type that no extracted curve covers, typically
 // under-resolved next to the domain surface), forbid the tets around the conflicting edges and
 // grow the region again (at most 8 times a try; a seed among them refuses the removal, naming
-// the place); compute the singularity-free field of §6.3
+// the place); likewise around the faces of its boundary where the held angles of §6.3 cannot
+// lift continuously (core/edit/angle_defects.h; at most 8 times, and only when no seed is
+// among those tets); compute the singularity-free field of §6.3
 // (singularity_free_field.h); re-extract with the same settings and verify
 // (edit_verification.h). On a failed verification retry with the distance grown by
 // `growFactor`, at most `retries` times; after a new curve or a piece of a target appeared,
@@ -70,6 +72,9 @@ struct RemoveCurvesReport {
   /// Regrowths of the region away from sign conflicts of the non-repeating eigenvector (places
   /// where it repeats that no extracted curve covers), and the conflicting edges avoided.
   int conflictRegrowths = 0, conflictEdges = 0;
+  /// Regrowths of the region away from faces of its boundary where the held values of the
+  /// angle of §6.3 cannot lift continuously (core/edit/angle_defects.h), and those faces.
+  int defectRegrowths = 0, defectFaces = 0;
   /// Retries that kept one more ring of tets away from the other curves (after a new curve or
   /// a piece of a target appeared in the region).
   int widenings = 0;
