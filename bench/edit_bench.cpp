@@ -36,6 +36,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <ctime>
 #include <fstream>
 #include <functional>
 #include <limits>
@@ -637,6 +638,7 @@ void AllEdits(benchmark::State& state) {
       struct Edit {
         std::string kind;
         std::function<std::string()> run;  ///< throws; returns the recheck's problem
+        std::string note = {};             ///< printed with a failure
       };
       std::vector<Edit> edits;
       // Removals: the targets whose scenario applies, picked at their middle points.
@@ -695,14 +697,15 @@ void AllEdits(benchmark::State& state) {
         // An arc of 15–35 % of the bounding radius pushed by 1–3 edge lengths, at most 30 %
         // of the arc's length (a smooth bump, not a spike).
         const double length = (0.15 + 0.2 * unit(rng)) * radius;
-        o.target = smoothTarget(*mesh, curves.curve(id), length,
-                                std::min((1 + 2 * unit(rng)) * h, 0.3 * length), rng, o.pick);
+        const double amplitude = std::min((1 + 2 * unit(rng)) * h, 0.3 * length);
+        o.target = smoothTarget(*mesh, curves.curve(id), length, amplitude, rng, o.pick);
         if (o.target.empty()) continue;
         o.curves = &curves;
         ++deforms;
         const std::size_t expected = curves.size();
         edits.push_back(
-            {"deformation", [&field, o, expected] {
+            {"deformation",
+             [&field, o, expected] {
                const DeformCurveResult r = deformCurve(field, o);
                const DegenerateCurves again = extractDegenerateCurves(r.field);
                std::string problem =
@@ -712,7 +715,11 @@ void AllEdits(benchmark::State& state) {
                    problem = "the new curve is " + std::to_string(again.pick(p)->distance) +
                              " from the target (bound " + std::to_string(r.report.tolerance) + ")";
                return problem;
-             }});
+             },
+             // The bump's bend radius at its top, L² / (2π² A), against the mean edge length.
+             "arc " + std::to_string(length) + ", push " + std::to_string(amplitude / h) +
+                 " h, bend radius " +
+                 std::to_string(length * length / (2 * 9.8696 * amplitude) / h) + " h"});
       }
       for (const Edit& edit : edits) {
         EditTally& kind = byKind[edit.kind];
@@ -740,8 +747,8 @@ void AllEdits(benchmark::State& state) {
                        source.c_str(), edit.kind.c_str(), e.what());
         } catch (const DeformationFailed& e) {
           one.failed = 1, ++failedChecks[edit.kind + ": " + failedCheckOf(e.what())];
-          std::fprintf(stderr, "FAILED (field %d, %s, %s, %s): %s\n", fields, name.c_str(),
-                       source.c_str(), edit.kind.c_str(), e.what());
+          std::fprintf(stderr, "FAILED (field %d, %s, %s, %s; %s): %s\n", fields, name.c_str(),
+                       source.c_str(), edit.kind.c_str(), edit.note.c_str(), e.what());
         } catch (const Error& e) {  // RemovalRefused and the edits' set-up errors
           one.refused = 1;
           ++refusals[edit.kind + ": " + refusalKind(e.what())];
@@ -784,14 +791,21 @@ void runTwoLoops(benchmark::State& state, const TensorField& field, std::vector<
   o.regionDistance = state.range(0) < 0 ? -1 : state.range(0) / 100.0;
   RemoveCurvesResult last{field, {}, {}, {}};
   bool verified = true;
+  double processCpu = 0;  // seconds, all threads: on a loaded machine a bound for a quiet one
   for (auto _ : state) {
+    const std::clock_t c0 = std::clock();
     try {
       last = removeCurves(field, o);
     } catch (const RemovalFailed& e) {  // reported, not hidden
       verified = false;
       state.SetLabel(e.what());
     }
+    processCpu += double(std::clock() - c0) / CLOCKS_PER_SEC;
   }
+  state.counters["cpu_all_threads_s"] = processCpu;
+  if (verified)  // the report (both steps' regions and times) on stderr
+    for (const std::string& line : last.report.lines())
+      std::fprintf(stderr, "  %s\n", line.c_str());
   state.counters["verified"] = verified;
   state.counters["tets"] = double(field.mesh().tetCount());
   state.counters["region_tets"] = double(last.regionTets.size());
