@@ -695,14 +695,9 @@ void AllEdits(benchmark::State& state) {
         if (deforms == 2) break;
         DeformCurveOptions o;
         // An arc of 15–35 % of the bounding radius pushed by 1–3 edge lengths, at most 30 %
-        // of the arc's length (a smooth bump, not a spike), and lengthened when needed so that
-        // the bump bends no tighter than one mean edge length h at its top (L² / (2π² A) ≥ h):
-        // a tighter bend is a kink at the mesh's resolution, which a curve of one point per face
-        // cannot follow within h (every deformation failure of the earlier runs was one).
-        const double push = (1 + 2 * unit(rng)) * h;
-        const double length =
-            std::max((0.15 + 0.2 * unit(rng)) * radius, 3.14159265358979 * std::sqrt(2 * push * h));
-        const double amplitude = std::min(push, 0.3 * length);
+        // of the arc's length (a smooth bump, not a spike).
+        const double length = (0.15 + 0.2 * unit(rng)) * radius;
+        const double amplitude = std::min((1 + 2 * unit(rng)) * h, 0.3 * length);
         o.target = smoothTarget(*mesh, curves.curve(id), length, amplitude, rng, o.pick);
         if (o.target.empty()) continue;
         o.curves = &curves;
