@@ -186,11 +186,16 @@ DeformCurveResult deformCurve(const TensorField& field, const DeformCurveOptions
       map = deformField(field, region.tets, rv, envelope, held, anchor, paths.gamma1, paths.gamma2,
                         progress);
       attempt.foldOvers = map->foldOvers, attempt.foldOversOnCurve = map->foldOversOnCurve;
-      if (map->foldOversOnCurve > 0)
-        attempt.failedCheck = "no fold-over on the curve",
+      if (map->foldOversOnCurve > 0) {
+        // The tets holding the target have only envelope vertices, which φ maps by the
+        // target alone (deformation_map.h): a larger region cannot unfold them.
+        attempt.failedCheck = "no fold-over on the curve";
         attempt.detail = std::to_string(map->foldOversOnCurve) + " of " +
                          std::to_string(map->foldOvers) +
-                         " inverted tets of the map hold the target";
+                         " inverted tets of the map hold the target; the map there depends on "
+                         "the target alone, so no larger region is tried";
+        return TryOutcome::Final;
+      }
     }
     if (!attempt.failedCheck.empty()) return TryOutcome::Failed;
     TensorField edited(field.meshPtr(), std::move(map->values));

@@ -64,14 +64,16 @@ struct EditRetries {
 EditRetries editRetries(const TetMesh& mesh, double regionDistance, int retries, double growFactor);
 
 /// What one try of an edit came to: verified (stop), failed (record it and retry with a larger
-/// region), or again (the try changed what the region may take and runs once more at the same
-/// distance, unrecorded).
-enum class TryOutcome { Verified, Failed, Again };
+/// region), again (the try changed what the region may take and runs once more at the same
+/// distance, unrecorded), or final (failed in a way no larger region changes: record it, no
+/// retry).
+enum class TryOutcome { Verified, Failed, Again, Final };
 
 /// Runs tries k = 0, 1, … ≤ retries: each gets a fresh `Try` record (a struct with `distance`,
 /// `regionTets`, `failedCheck` and `detail`) with its distance set, and `attempt(k, record)`
 /// builds the region, edits and verifies. Recorded tries go to `tries`. Returns whether a try
-/// verified; stops early when a failed try's region is no larger than the one before.
+/// verified; stops early after a Final try or when a failed try's region is no larger than the
+/// one before.
 template <class Try, class Attempt>
 bool runEditTries(const EditRetries& plan, std::vector<Try>& tries, const Progress& progress,
                   Attempt&& attempt) {
@@ -86,6 +88,7 @@ bool runEditTries(const EditRetries& plan, std::vector<Try>& tries, const Progre
     }
     tries.push_back(std::move(t));
     if (outcome == TryOutcome::Verified) return true;
+    if (outcome == TryOutcome::Final) break;
     if (k > 0 && tries[k - 1].regionTets == tries[k].regionTets) break;  // cannot grow
   }
   return false;
@@ -113,10 +116,10 @@ template <class Failure, class Try>
   for (std::size_t i = 0; i + 1 < tries.size(); ++i)
     earlier += "; try " + std::to_string(i + 1) + " (" + std::to_string(tries[i].regionTets) +
                " tets): " + tries[i].failedCheck + " (" + tries[i].detail + ")";
-  throw Failure(what + " failed after " + std::to_string(tries.size()) + " tries: check '" +
-                last.failedCheck + "' failed (" + last.detail + "); last region " +
-                std::to_string(last.regionTets) + " tets (distance " + editNumber(last.distance) +
-                ")" + earlier);
+  throw Failure(what + " failed after " + std::to_string(tries.size()) +
+                (tries.size() == 1 ? " try" : " tries") + ": check '" + last.failedCheck +
+                "' failed (" + last.detail + "); last region " + std::to_string(last.regionTets) +
+                " tets (distance " + editNumber(last.distance) + ")" + earlier);
 }
 
 /// Seconds since `start`.

@@ -223,7 +223,9 @@ ReconnectCurvesResult reconnectCurves(const TensorField& field, const ReconnectC
   const TetMesh& mesh = field.mesh();
   const EditRetries plan = editRetries(mesh, o.regionDistance, o.retries, o.growFactor);
   progress.report(0, "extracting curves");
-  const DegenerateCurves all = extractDegenerateCurves(field, o.extract, progress);
+  std::optional<DegenerateCurves> extracted;
+  if (!o.extracted) extracted = extractDegenerateCurves(field, o.extract, progress);
+  const DegenerateCurves& all = o.extracted ? *o.extracted : *extracted;
   ReconnectCurvesReport report;
   // The asked segments; when they have no valid setup, the other lengths below are tried
   // before refusing.

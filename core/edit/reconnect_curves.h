@@ -44,6 +44,10 @@ struct ReconnectCurvesOptions {
   /// The field's curves when the caller has them (the picks name what the user sees); they
   /// must belong to the field. Null: the extraction below.
   const DegenerateCurves* curves = nullptr;
+  /// The field's own curves, extracted with `extract`, when the caller has just extracted them
+  /// (the two-loop removal between its steps): the edit then skips its first extraction. Not
+  /// checked; null: the edit extracts.
+  const DegenerateCurves* extracted = nullptr;
   ExtractOptions extract;  ///< settings of the extraction before and after (the same)
 };
 

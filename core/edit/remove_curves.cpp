@@ -189,7 +189,9 @@ RemoveCurvesResult removeCurves(const TensorField& field, const RemoveCurvesOpti
   const TetMesh& mesh = field.mesh();
   const EditRetries plan = editRetries(mesh, o.regionDistance, o.retries, o.growFactor);
   progress.report(0, "extracting curves");
-  const DegenerateCurves all = extractDegenerateCurves(field, o.extract, progress);
+  std::optional<DegenerateCurves> extracted;
+  if (!o.extracted) extracted = extractDegenerateCurves(field, o.extract, progress);
+  const DegenerateCurves& all = o.extracted ? *o.extracted : *extracted;
   const Targets targets = resolveTargets(mesh, all, o);
   RemoveCurvesReport report;
   report.scenario = removalScenario(targets.curves);
@@ -197,7 +199,7 @@ RemoveCurvesResult removeCurves(const TensorField& field, const RemoveCurvesOpti
   report.pickDistances = targets.pickDistances;
   report.curvesBefore = all.size();
   if (report.scenario == RemovalScenario::TwoLoop)
-    return removeTwoLoops(field, o, *targets.curves[0], *targets.curves[1], std::move(report),
+    return removeTwoLoops(field, o, all, *targets.curves[0], *targets.curves[1], std::move(report),
                           progress);
   const DegenerateType type = targets.curves[0]->type;
 

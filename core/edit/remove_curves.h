@@ -45,6 +45,10 @@ struct RemoveCurvesOptions {
   /// The field's curves when the caller has them (used to resolve the picks, so they name what
   /// the user sees); null: the picks use the extraction below. They must belong to the field.
   const DegenerateCurves* curves = nullptr;
+  /// The field's own curves, extracted with `extract`, when the caller has just extracted them
+  /// (the two-loop removal between its steps): the edit then skips its first extraction. Not
+  /// checked; null: the edit extracts.
+  const DegenerateCurves* extracted = nullptr;
   ExtractOptions extract;  ///< settings of the extraction before and after (the same)
 };
 

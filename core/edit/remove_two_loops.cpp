@@ -12,8 +12,9 @@
 namespace tfd::core {
 
 RemoveCurvesResult removeTwoLoops(const TensorField& field, const RemoveCurvesOptions& o,
-                                  const DegenerateCurve& a, const DegenerateCurve& b,
-                                  RemoveCurvesReport report, const Progress& progress) {
+                                  const DegenerateCurves& all, const DegenerateCurve& a,
+                                  const DegenerateCurve& b, RemoveCurvesReport report,
+                                  const Progress& progress) {
   const auto start = std::chrono::steady_clock::now();
   // Step 1: reconnect where the loops come closest.
   std::size_t ia = 0, ib = 0;
@@ -28,6 +29,7 @@ RemoveCurvesResult removeTwoLoops(const TensorField& field, const RemoveCurvesOp
   ro.retries = o.retries;
   ro.growFactor = o.growFactor;
   ro.extract = o.extract;
+  ro.extracted = &all;
   const std::string step1 = "two-loop removal, step 1 (reconnecting the loops into one): ";
   std::optional<ReconnectCurvesResult> joined;
   try {
@@ -47,6 +49,7 @@ RemoveCurvesResult removeTwoLoops(const TensorField& field, const RemoveCurvesOp
   RemoveCurvesOptions lo = o;
   lo.picks = {a.points[(ia + a.points.size() / 2) % a.points.size()]};
   lo.curves = &joined->curves;
+  lo.extracted = &joined->curves;  // extracted from joined->field with o.extract
   const std::string step2 = "two-loop removal, step 2 (removing the merged loop): ";
   std::optional<RemoveCurvesResult> removed;
   try {

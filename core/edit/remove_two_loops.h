@@ -12,13 +12,16 @@
 
 namespace tfd::core {
 
-/// `a`, `b`: the two picked loops of `field` (a two-loop scenario); `report` carries the
+/// `all`: the curves of `field` extracted with options.extract (each step reuses the
+/// extraction before it: step 1 these, step 2 step 1's result's); `a`, `b`: the two picked
+/// loops among them (a two-loop scenario); `report` carries the
 /// scenario, targets, pick distances and curve count already filled by removeCurves. The
 /// result's region is the union of both steps' regions; its report describes step 2 and lists
 /// step 1's lines in `reconnection`. Throws RemovalRefused when a step cannot be set up (no
 /// ball region), RemovalFailed when a step did not verify (naming the step).
 RemoveCurvesResult removeTwoLoops(const TensorField& field, const RemoveCurvesOptions& options,
-                                  const DegenerateCurve& a, const DegenerateCurve& b,
-                                  RemoveCurvesReport report, const Progress& progress);
+                                  const DegenerateCurves& all, const DegenerateCurve& a,
+                                  const DegenerateCurve& b, RemoveCurvesReport report,
+                                  const Progress& progress);
 
 }  // namespace tfd::core

@@ -20,8 +20,9 @@ void declare(graph::NodeDecl& d) {
        "segment (harmonic in the region, the identity on its boundary); outside it nothing "
        "changes. The result is verified by extracting the curves again (one curve in the "
        "region, following the target within the region's mean edge length; every other curve "
-       "and vertex unchanged); a failed check, or a fold-over of the map on the curve, retries "
-       "with a larger region, then fails the node naming the check.")
+       "and vertex unchanged); a failed check retries with a larger region, then fails the "
+       "node naming the check; a fold-over of the map on the curve fails it at once (the map "
+       "there depends on the target alone, not on the region).")
       .category("Edit");
   declareEditPorts(d,
                    {"This field's degenerate curves, when already extracted: the pick names their "
@@ -36,7 +37,7 @@ void declare(graph::NodeDecl& d) {
       .doc(
           "The new course of the segment [[x, y, z], ...], at least 2 points; its ends name "
           "where the segment leaves the curve (projected onto it).");
-  declareEditRetryParams(d, "the segment and the target", "a failed verification or a fold-over");
+  declareEditRetryParams(d, "the segment and the target", "a failed verification");
 }
 
 void cook(graph::CookContext& c) {

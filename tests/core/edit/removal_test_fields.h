@@ -70,4 +70,27 @@ inline Complex coreCircleW(const Vec3& p, double R = 0.6) {
   return {std::hypot(p.x(), p.y()) - R, p.z()};
 }
 
+/// A smooth frame on any domain (no axis to avoid) under which circles around the z axis are
+/// pure loops: e = (−y, x, k) normalised turns with the circles but tilts towards ẑ by k (so e ·
+/// φ̂ = ρ / √(ρ² + k²) > 0 off the axis, and e = ẑ on it), u is x̂ projected off e (never
+/// parallel to e, whose z component is positive), w = e × u.
+inline Frame swirlFrame(const Vec3& p, double k = 0.3) {
+  const Vec3 e = Vec3(-p.y(), p.x(), k).normalized();
+  const Vec3 u = (Vec3::UnitX() - e.x() * e).normalized();
+  return {e, u, e.cross(u)};
+}
+/// Circles around the z axis in the plane z = z0, radii r1 < r2, one pure wedge and one pure
+/// trisector (the inner one the trisector when `innerTrisector`) under turningFrame or
+/// swirlFrame. Scaled by 10 and bounded to |W| < 1 by a positive factor (zero set and patterns
+/// unchanged): between the circles the product is small, and the linear interpolation of a
+/// turning frame across an edge would otherwise add degenerate points of its own.
+inline Complex twoCirclesW(const Vec3& p, double r1, double r2, double z0 = 0,
+                           bool innerTrisector = false) {
+  const double rho = std::hypot(p.x(), p.y());
+  Complex inner(rho - r1, p.z() - z0), outer(rho - r2, p.z() - z0);
+  (innerTrisector ? inner : outer) = std::conj(innerTrisector ? inner : outer);
+  const Complex w = 10.0 * inner * outer;
+  return w / std::sqrt(1 + std::norm(w));
+}
+
 }  // namespace tfd::core::testing

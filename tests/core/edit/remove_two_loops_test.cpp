@@ -82,6 +82,39 @@ TEST(RemoveTwoLoops, APureWedgeLoopAndAPureTrisectorLoopCancel) {
     }
 }
 
+// Fig. 17d as the paper draws it: two concentric pure loops in a simply connected solid (a
+// box), under a frame without an axis to avoid (removal_test_fields.h: swirlFrame). The merged
+// loop bounds a band between the circles, so both regions stay around the circles: the far
+// corners of the box keep their tensors.
+TEST(RemoveTwoLoops, ConcentricLoopsInABoxAreRemovedLocally) {
+  const auto mesh = testing::jitteredBox(18, 0.15);
+  const TensorField field = testing::designedField(
+      mesh, [](const Vec3& p) { return testing::twoCirclesW(p, 0.3, 0.55); },
+      [](const Vec3& p) { return testing::swirlFrame(p); });
+  const DegenerateCurves before = extractDegenerateCurves(field);
+  ASSERT_EQ(before.size(), 2u) << before.summary();
+  for (const DegenerateCurve& c : before.curves()) {
+    ASSERT_TRUE(c.closed);
+    const PatternCounts n = patternCounts(c);
+    ASSERT_EQ(n.wedge * n.trisector, 0) << "a pure loop";
+  }
+  RemoveCurvesOptions o;
+  o.picks = {Vec3(0.3, 0, 0), Vec3(-0.55, 0, 0)};
+  o.regionDistance = 0.2;
+  const RemoveCurvesResult r = removeCurves(field, o);
+  for (const std::string& line : r.report.lines()) std::printf("  %s\n", line.c_str());
+  EXPECT_EQ(r.report.scenario, RemovalScenario::TwoLoop);
+  EXPECT_EQ(extractDegenerateCurves(r.field).size(), 0u);
+  EXPECT_LT(r.regionTets.size(), mesh->tetCount() / 2);
+  const RegionVertices rv = regionVertices(*mesh, r.regionTets);
+  std::vector<char> inRegion(mesh->vertexCount(), 0);
+  for (int v : rv.vertices) inRegion[v] = 1;
+  for (int v = 0; v < int(mesh->vertexCount()); ++v)
+    if (!inRegion[v]) {
+      ASSERT_TRUE(bitwiseEqual(field.at(v), r.field.at(v))) << v;
+    }
+}
+
 TEST(RemoveTwoLoops, TwoLoopsOfOnePatternAreRefused) {
   const TensorField field = testing::designedField(
       torus(), [](const Vec3& p) { return twoCircles(p, true); }, testing::turningFrame);
