@@ -59,6 +59,7 @@
 #include "tests/core/design/curve_test_meshes.h"
 #include "tests/core/edit/reconnect_test_fields.h"
 #include "tests/core/edit/removal_test_fields.h"
+#include "tests/support/random_vec3.h"
 
 namespace {
 
@@ -233,8 +234,8 @@ TensorField randomDesign(std::shared_ptr<const TetMesh> mesh, std::mt19937& rng,
   const int n = curvature ? 1 : 3 + int(rng() % 3);
   for (int i = 0; i < n; ++i) {
     PointElement e;
-    const Mat3 frame = rotationFromEulerDegrees(Vec3(angle(rng), angle(rng), angle(rng)));
-    const Vec3 at(u(rng), u(rng), u(rng));
+    const Mat3 frame = rotationFromEulerDegrees(tfd::test::drawVec3(angle, rng));
+    const Vec3 at = tfd::test::drawVec3(u, rng);
     if (rng() % 2) {
       e.field = makeDegenerateLinearization(
           at, frame, rng() % 2 ? DegenerateType::Linear : DegenerateType::Planar,
@@ -562,7 +563,7 @@ std::vector<Vec3> smoothTarget(const TetMesh& mesh, const DegenerateCurve& c, do
     s[i] = s[i - 1] + (c.points[idx[i]] - c.points[idx[i - 1]]).norm();
   const Vec3 chord = (c.points[idx.back()] - c.points[idx.front()]).normalized();
   std::normal_distribution<double> g;
-  Vec3 dir(g(rng), g(rng), g(rng));
+  Vec3 dir = tfd::test::drawVec3(g, rng);
   dir -= dir.dot(chord) * chord;
   if (!(dir.norm() > 1e-6)) return {};
   dir.normalize();

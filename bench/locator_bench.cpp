@@ -10,6 +10,7 @@
 
 #include "core/point_locator.h"
 #include "io/tetgen/tetgen_mesher.h"
+#include "tests/support/random_vec3.h"
 
 namespace {
 
@@ -24,7 +25,7 @@ std::vector<core::Vec3> randomPoints(std::size_t n) {
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> u(-1, 1);
   std::vector<core::Vec3> points(n);
-  for (auto& p : points) p = core::Vec3(u(rng), u(rng), u(rng));
+  for (auto& p : points) p = tfd::test::drawVec3(u, rng);
   return points;
 }
 
