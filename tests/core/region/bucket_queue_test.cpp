@@ -76,7 +76,8 @@ TEST(BucketQueue, LogBucketsKeepTheMaxQueueOrderOfTheSpanningTree) {
       if (u(rng) < 0.1) w = u(rng);
       if (u(rng) < 0.05) w = std::floor(w * 1000) / 1000;
       if (u(rng) < 0.01) w = u(rng) < 0.5 ? 1 + 1e-16 * 2 : 0.0;
-      const Entry e(w, -int(rng() % 300), int(rng() % 300));
+      const int a = -int(rng() % 300), b = int(rng() % 300);  // one draw per declarator: in order
+      const Entry e(w, a, b);
       reference.push(e);
       queue.emplace(logBucket(1 - w), e);
     } else {
