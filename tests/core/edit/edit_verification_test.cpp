@@ -14,7 +14,8 @@ namespace tfd::core {
 namespace {
 
 /// A synthetic curve through the given tets (points at their centroids).
-DegenerateCurve curveThrough(const TetMesh& m, const std::vector<int>& tets, Vec3 shift = {}) {
+DegenerateCurve curveThrough(const TetMesh& m, const std::vector<int>& tets,
+                             const Vec3& shift = Vec3::Zero()) {
   DegenerateCurve c;
   for (int t : tets) {
     const auto& v = m.tets()[t];
