@@ -16,6 +16,16 @@
 namespace tfd::core {
 namespace {
 
+/// Pops both queues to the end, entry by entry equal.
+template <class Queue, class Reference>
+void expectDrainsInOrder(Queue& queue, Reference& reference) {
+  while (!reference.empty()) {
+    ASSERT_EQ(queue.top(), reference.top());
+    queue.pop(), reference.pop();
+  }
+  EXPECT_TRUE(queue.empty());
+}
+
 TEST(BucketQueue, PopsInThePriorityQueueOrder) {
   for (const double width : {1e-3, 0.05, 0.3, 10.0}) {
     std::mt19937 rng(3);
@@ -27,7 +37,9 @@ TEST(BucketQueue, PopsInThePriorityQueueOrder) {
     int pops = 0;
     for (int step = 0; step < 20000; ++step) {
       if (reference.empty() || u(rng) < 0.55) {
-        double key = front + 0.2 * u(rng) - (u(rng) < 0.1 ? 0.3 * u(rng) : 0.0);
+        const double ahead = 0.2 * u(rng);  // one draw per statement: the same keys everywhere
+        const double behind = u(rng) < 0.1 ? 0.3 * u(rng) : 0.0;
+        double key = front + ahead - behind;
         key = std::max(key, 0.0);
         if (u(rng) < 0.05) key = std::floor(key * 10) / 10;  // exact ties
         const int id = int(rng() % 500);
@@ -43,11 +55,7 @@ TEST(BucketQueue, PopsInThePriorityQueueOrder) {
       }
       ASSERT_EQ(queue.empty(), reference.empty());
     }
-    while (!reference.empty()) {
-      ASSERT_EQ(queue.top(), reference.top());
-      queue.pop(), reference.pop();
-    }
-    EXPECT_TRUE(queue.empty());
+    expectDrainsInOrder(queue, reference);
     EXPECT_GT(pops, 5000);
   }
   // Keys far beyond the last bucket share it and still come out in order.
@@ -87,11 +95,7 @@ TEST(BucketQueue, LogBucketsKeepTheMaxQueueOrderOfTheSpanningTree) {
     }
     ASSERT_EQ(queue.empty(), reference.empty());
   }
-  while (!reference.empty()) {
-    ASSERT_EQ(queue.top(), reference.top());
-    queue.pop(), reference.pop();
-  }
-  EXPECT_TRUE(queue.empty());
+  expectDrainsInOrder(queue, reference);
   EXPECT_GT(pops, 10000);
   // Non-decreasing in the key, over many orders of magnitude.
   std::size_t last = 0;
