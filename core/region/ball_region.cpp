@@ -1,11 +1,17 @@
 #include "core/region/ball_region.h"
 
+#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
+
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
+#include <exception>
 #include <functional>
 #include <limits>
 #include <memory>
+#include <thread>
 
 #include "core/error.h"
 #include "core/region/bucket_queue.h"
@@ -27,6 +33,11 @@ double bucketWidth(const TetMesh& mesh) { return std::max(0.25 * mesh.meanEdgeLe
 /// edge), so once every key ≤ P is popped, a distance ≤ P − margin is final. Region growing
 /// asks only for the tets next to its set, so the front stays one layer ahead of it and the
 /// cost follows the grown set, not the bound.
+///
+/// The same rule lets the front run ahead in a thread of its own (run()) while the growth reads
+/// distances as they become final (settledAt()): the front publishes P − margin after each
+/// step, and a distance read at most that is final. The pops, and so every distance, are those
+/// of the sequential run; the growth only waits for them.
 class DistanceFront {
  public:
   /// `margin`: frontMargin(mesh).
@@ -52,6 +63,43 @@ class DistanceFront {
     return label_[t].d;
   }
   void settleAll(const Progress& progress) { advance(kInf, progress); }
+  ~DistanceFront() { stop(); }
+
+  /// Advances the front in a thread of its own, for settledAt().
+  void run(const Progress& progress) {
+    thread_ = std::thread([this, &progress] {
+      try {
+        while (!stopping_.load(std::memory_order_relaxed) && !heap_.empty()) {
+          advance(std::max(popped_, heap_.top().first) + step_, progress);
+          final_.store(popped_ - margin_, std::memory_order_release);
+        }
+      } catch (...) {
+        error_ = std::current_exception();
+        failed_.store(true, std::memory_order_release);
+      }
+      final_.store(kInf, std::memory_order_release);
+    });
+  }
+  /// The final distance of tet t, waiting for the front of run() to settle it; rethrows what
+  /// stopped the front (a cancellation).
+  double settledAt(int t) {
+    for (;;) {
+      const double bound = final_.load(std::memory_order_acquire);
+      if (failed_.load(std::memory_order_acquire)) {
+        stop();
+        std::rethrow_exception(error_);
+      }
+      // Distances only decrease and a final one was stored before `bound` was published.
+      const double d = std::atomic_ref<double>(label_[t].d).load(std::memory_order_relaxed);
+      if (d <= bound) return d;
+      std::this_thread::yield();
+    }
+  }
+  /// Stops and joins the thread of run(), if any.
+  void stop() {
+    stopping_.store(true, std::memory_order_relaxed);
+    if (thread_.joinable()) thread_.join();
+  }
   /// The distance of every tet (settleAll() first).
   std::vector<double> release() const {
     std::vector<double> d(label_.size());
@@ -80,7 +128,8 @@ class DistanceFront {
         if (there.d == 0) continue;
         const double dn = (rows_[n].centroid - origin).norm();
         if (dn <= bound_ && dn < there.d) {
-          there.d = dn;
+          // Read by settledAt() while run() writes: an atomic store (a plain one on x86).
+          std::atomic_ref<double>(there.d).store(dn, std::memory_order_relaxed);
           there.source = here.source;
           heap_.emplace(dn, n);
         }
@@ -100,6 +149,10 @@ class DistanceFront {
   std::vector<Label> label_;
   BucketQueue heap_;
   std::size_t steps_ = 0;
+  std::thread thread_;
+  std::atomic<double> final_ = -kInf;  ///< run(): every distance ≤ this is final
+  std::atomic<bool> stopping_ = false, failed_ = false;
+  std::exception_ptr error_;
 };
 
 /// Half the longest edge: at least the centroid distance of any two face neighbours.
@@ -108,6 +161,13 @@ double frontMargin(const TetMesh& mesh) {
   for (const auto& e : mesh.edges())
     longest = std::max(longest, (mesh.positions()[e[0]] - mesh.positions()[e[1]]).norm());
   return 0.5 * longest;
+}
+
+/// Whether a second thread may run the distance front beside the growth (not when the
+/// process, or the calling task arena, is limited to one thread).
+bool frontThreadAllowed() {
+  return tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism) > 1 &&
+         tbb::this_task_arena::max_concurrency() > 1;
 }
 
 /// Adds tets nearest first while they keep the set a ball: candidates are the face neighbours
@@ -334,10 +394,17 @@ BallRegion growBallRegion(const TetMesh& mesh, std::span<const int> seedSpan,
   // Step 3.
   if (options.distance > 0) {
     const std::vector<int> core = set.tets();
-    // The front advances only as far as the growth asks (TetRows is not thread-safe: a front
-    // in a thread of its own, tried, raced with the growth on rows filled on first use).
+    // The front runs ahead in a second thread while the growth waits for final distances
+    // (both read the rows, which TetRows fills before either starts).
     DistanceFront front(mesh, rows, core, options.distance, margin);
-    Grower grower(set, forbidden, [&](int t) { return front.at(t, progress); });
+    const bool parallel = frontThreadAllowed();
+    if (parallel) {
+      front.run(progress);
+    } else {
+      front.settleAll(progress);
+    }
+    Grower grower(set, forbidden,
+                  [&](int t) { return parallel ? front.settledAt(t) : front.at(t, progress); });
     grower.queueNeighboursOfSet(core);
     grower.run([] { return false; }, progress);
     r.growOutStop = "added " + std::to_string(grower.added()) + " tets out to distance " +
