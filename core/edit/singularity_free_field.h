@@ -6,7 +6,8 @@
 // In M the non-repeating eigenvector N (major for Linear, minor for Planar targets) is a vector
 // field (core/edit/vectorise_eigenvector.h) and stays as it is, except where it turns by more
 // than 30° across an edge next to a vertex where its eigenvalue nearly repeats (a
-// near-degeneracy of the other type that the mesh does not resolve):
+// near-degeneracy of the other type that the mesh does not resolve), or, when asked
+// (`smoothEveryFastTurn`, as a removal does), wherever it turns by more than 30° across an edge:
 // there the free vertices take its harmonic extension (core/edit/smooth_directions.h), since
 // a field keeping such an N, with the large gaps made below, repeats an eigenvalue on the faces
 // in between. A degenerate point of the new field could then only be a singularity of the
