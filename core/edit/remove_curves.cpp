@@ -279,7 +279,8 @@ RemoveCurvesResult removeCurves(const TensorField& field, const RemoveCurvesOpti
       report.flow = boundaryFlow(mesh, region.tets, vec);
       report.signConflicts = vec.signConflicts;
       try {
-        edited = singularityFreeField(field, complex, vec, rv.held, type, progress, nullptr);
+        edited = singularityFreeField(field, complex, vec, rv.held, type, progress, nullptr,
+                                      /*smoothEveryFastTurn=*/true);
       } catch (const Cancelled&) {
         throw;
       } catch (const Error& e) {

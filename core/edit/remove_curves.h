@@ -17,7 +17,8 @@
 // the place); likewise around the faces of its boundary where the held angles of §6.3 cannot
 // lift continuously (core/edit/angle_defects.h; at most 8 times, and only when no seed is
 // among those tets); compute the singularity-free field of §6.3
-// (singularity_free_field.h); re-extract with the same settings and verify
+// (singularity_free_field.h; N smoothed at the free vertices around every edge where it turns
+// by more than 30°); re-extract with the same settings and verify
 // (edit_verification.h). On a failed verification retry with the distance grown by
 // `growFactor`, at most `retries` times; after a new curve or a piece of a target appeared,
 // the retry also keeps one more ring of tets from the other curves (unless that ring would

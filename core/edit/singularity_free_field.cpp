@@ -63,19 +63,22 @@ int centralVertex(const TetMesh& mesh, const RegionComplex& region) {
 
 /// N where it is smooth; its harmonic extension around edges where it turns by more than 30°
 /// next to a vertex where it is ill-defined: the gap between its eigenvalue and the nearest one
-/// below a tenth of the deviator's spread (core/edit/smooth_directions.h).
+/// below a tenth of the deviator's spread (core/edit/smooth_directions.h); with
+/// `everyFastTurn`, around every edge where it turns by more than 30°.
 DirectionRepair repairDirections(const TetMesh& mesh, const RegionComplex& region,
                                  const std::vector<Vec3>& directions,
                                  const std::vector<char>& fixed,
                                  const std::vector<EigenDecomposition>& eig, DegenerateType type,
-                                 const Progress& progress) {
+                                 bool everyFastTurn, const Progress& progress) {
   const int count = static_cast<int>(region.vertices.size());
-  std::vector<char> weak(count, 0);
-  forEach(count, [&](int i) {
-    const Vec3& l = eig[i].values;
-    const double own = type == DegenerateType::Linear ? l[0] - l[1] : l[1] - l[2];
-    weak[i] = own < kWeakGap * (l[0] - l[2]);
-  });
+  std::vector<char> weak(count, 1);
+  if (!everyFastTurn) {
+    forEach(count, [&](int i) {
+      const Vec3& l = eig[i].values;
+      const double own = type == DegenerateType::Linear ? l[0] - l[1] : l[1] - l[2];
+      weak[i] = own < kWeakGap * (l[0] - l[2]);
+    });
+  }
   return repairRoughDirections(mesh, region, directions, fixed, weak, kMaxTurn, kRepairRings,
                                progress);
 }
@@ -123,7 +126,7 @@ TensorField singularityFreeField(const TensorField& field, const std::vector<int
 TensorField singularityFreeField(const TensorField& field, const RegionComplex& region,
                                  const VectorisedEigenvector& n, const std::vector<char>& held,
                                  DegenerateType type, const Progress& progress,
-                                 SingularityFreeReport* report) {
+                                 SingularityFreeReport* report, bool smoothEveryFastTurn) {
   const TetMesh& mesh = field.mesh();
   if (held.size() != mesh.vertexCount()) {
     throw Error("singularity-free field: `held` has " + std::to_string(held.size()) +
@@ -161,7 +164,7 @@ TensorField singularityFreeField(const TensorField& field, const RegionComplex& 
   progress.throwIfCancelled();
 
   const DirectionRepair repaired =
-      repairDirections(mesh, region, n.directions, fixed, eig, type, progress);
+      repairDirections(mesh, region, n.directions, fixed, eig, type, smoothEveryFastTurn, progress);
   const std::vector<Vec3>& directions = repaired.directions;
   r.roughEdges = repaired.roughEdges;
   r.repairedDirections = repaired.solvedVertices;

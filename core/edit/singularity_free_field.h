@@ -6,7 +6,8 @@
 // In M the non-repeating eigenvector N (major for Linear, minor for Planar targets) is a vector
 // field (core/edit/vectorise_eigenvector.h) and stays as it is, except where it turns by more
 // than 30° across an edge next to a vertex where its eigenvalue nearly repeats (a
-// near-degeneracy of the other type that the mesh does not resolve):
+// near-degeneracy of the other type that the mesh does not resolve), or, when asked
+// (`smoothEveryFastTurn`, as a removal does), wherever it turns by more than 30° across an edge:
 // there the free vertices take its harmonic extension (core/edit/smooth_directions.h), since
 // a field keeping such an N, with the large gaps made below, repeats an eigenvalue on the faces
 // in between. A degenerate point of the new field could then only be a singularity of the
@@ -81,10 +82,15 @@ TensorField singularityFreeField(const TensorField& field, const std::vector<int
                                  const Progress& progress, SingularityFreeReport* report);
 /// Same, on the region complex and the vectorised non-repeating eigenvector of `type` already
 /// computed by the caller (`directions` of vectoriseEigenvector(field, region, type)): a
-/// removal builds both once for its report and for this step.
+/// removal builds both once for its report and for this step. `smoothEveryFastTurn`: the free
+/// vertices take N's harmonic extension around every region edge across which N turns by more
+/// than 30°, not only next to a vertex where N is ill-defined (a removal asks for it: where a
+/// well-defined N turns that fast across a tet, e.g. a boundary-conforming N at an edge of the
+/// domain, and the gap of the repeating pair is small, the linear interpolation of the new
+/// tensors repeats an eigenvalue inside the tet).
 TensorField singularityFreeField(const TensorField& field, const RegionComplex& region,
                                  const VectorisedEigenvector& n, const std::vector<char>& held,
                                  DegenerateType type, const Progress& progress,
-                                 SingularityFreeReport* report);
+                                 SingularityFreeReport* report, bool smoothEveryFastTurn = false);
 
 }  // namespace tfd::core

@@ -16,7 +16,11 @@
 // vertices keep their N (their tensors do not change). Any smooth nowhere-zero N serves §6.3:
 // the reference field, the angle θ and the recombination only need N continuous.
 // A fast but well-defined turn (no weak end) is left alone: §6.3 handles it with the jumps,
-// and a harmonic extension over a large patch could give N a zero.
+// and a harmonic extension over a large patch could give N a zero. A caller that marks every
+// vertex weak repairs every fast turn: a removal does (core/edit/singularity_free_field.h),
+// since a boundary-conforming N turning by 45–70° inside a tet at an edge of the domain, next
+// to a small gap of the repeating pair, left a piece of the target there (the verification
+// still judges the result, a zero of N included).
 // Deterministic for any thread count; the cost follows the repaired patch (plus a pass over
 // the region's edges).
 #include <vector>
