@@ -11,6 +11,7 @@
 #include "core/edit/remove_curves.h"
 #include "core/topology/extract_degenerate_curves.h"
 #include "tests/core/design/curve_test_meshes.h"
+#include "tests/core/edit/recorded_point_constraints.h"
 
 namespace tfd::core {
 namespace {
@@ -42,13 +43,7 @@ TEST(AngleDefects, LineFieldIndexCountsHalfTurns) {
 /// 46-point planar curve along it.
 TensorField randomField46() {
   const auto mesh = testing::jitteredBox(14, 0.15);
-  struct Raw {
-    bool degenerate;
-    Vec3 origin;
-    double frame[9];
-    Tensor value, jx, jy, jz;
-  };
-  const Raw raw[] = {
+  const testing::RecordedPoint raw[] = {
       {true,
        {0.013298873476327966, 0.44315309649992518, 0.11419148328064677},
        {0.094393569926493295, 0.42870085386605167, 0.89850177064436021, 0.0058340531049589171,
@@ -86,17 +81,7 @@ TensorField randomField46() {
        {},
        {}},
   };
-  ConstraintSet set;
-  for (const Raw& r : raw) {
-    PointElement e;
-    e.degenerate = r.degenerate;
-    e.field.origin = r.origin;
-    for (int i = 0; i < 9; ++i) e.field.frame(i / 3, i % 3) = r.frame[i];
-    e.field.value = r.value;
-    e.field.jacobian = {r.jx, r.jy, r.jz};
-    set.points.push_back(e);
-  }
-  return propagate(mesh, set, PropagateOptions{}).field;
+  return propagate(mesh, testing::recordedConstraints(raw), PropagateOptions{}).field;
 }
 
 TEST(AngleDefects, RemovalGrowsAwayFromHeldDefectsAndVerifies) {

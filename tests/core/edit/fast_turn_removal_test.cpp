@@ -6,6 +6,7 @@
 #include "core/edit/remove_curves.h"
 #include "core/topology/extract_degenerate_curves.h"
 #include "tests/core/design/curve_test_meshes.h"
+#include "tests/core/edit/recorded_point_constraints.h"
 
 namespace tfd::core {
 namespace {
@@ -18,13 +19,7 @@ namespace {
 /// tensors repeated an eigenvalue in those tets and a 3-point piece of the target remained.
 TensorField randomField281() {
   const auto mesh = testing::jitteredBox(14, 0.15);
-  struct Raw {
-    bool degenerate;
-    Vec3 origin;
-    double frame[9];
-    Tensor value, jx, jy, jz;
-  };
-  const Raw raw[] = {
+  const testing::RecordedPoint raw[] = {
       {true,
        {-0.46094463648048284, -0.44400974968490126, -0.3466197185978084},
        {-0.989917450860037, -0.0013393949245763138, -0.14163914184999127, 0.14105443353679484,
@@ -62,17 +57,7 @@ TensorField randomField281() {
        {0, 0, 0, -1, 0, 0},
        {}},
   };
-  ConstraintSet set;
-  for (const Raw& r : raw) {
-    PointElement e;
-    e.degenerate = r.degenerate;
-    e.field.origin = r.origin;
-    for (int i = 0; i < 9; ++i) e.field.frame(i / 3, i % 3) = r.frame[i];
-    e.field.value = r.value;
-    e.field.jacobian = {r.jx, r.jy, r.jz};
-    set.points.push_back(e);
-  }
-  return propagate(mesh, set, PropagateOptions{}).field;
+  return propagate(mesh, testing::recordedConstraints(raw), PropagateOptions{}).field;
 }
 
 TEST(FastTurnRemoval, CurveAtABoxCornerIsRemovedAndVerifies) {
@@ -90,17 +75,7 @@ TEST(FastTurnRemoval, CurveAtABoxCornerIsRemovedAndVerifies) {
   EXPECT_EQ(r.report.scenario, RemovalScenario::OneCurve);
   EXPECT_EQ(r.curves.size(), before.size() - 1) << r.curves.summary();
   EXPECT_EQ(extractDegenerateCurves(r.field).size(), before.size() - 1);
-  // Outside the region the field is unchanged bitwise.
-  std::vector<char> inRegion(field.mesh().vertexCount(), 0);
-  for (int t : r.regionTets)
-    for (int v : field.mesh().tets()[t]) inRegion[v] = 1;
-  for (std::size_t v = 0; v < inRegion.size(); ++v) {
-    if (inRegion[v]) continue;
-    const Tensor &a = field.at(static_cast<int>(v)), &b = r.field.at(static_cast<int>(v));
-    ASSERT_TRUE(a.xx == b.xx && a.yy == b.yy && a.zz == b.zz && a.xy == b.xy && a.yz == b.yz &&
-                a.xz == b.xz)
-        << "vertex " << v;
-  }
+  testing::expectUnchangedOutside(field, r.field, r.regionTets);
 }
 
 }  // namespace
