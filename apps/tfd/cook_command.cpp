@@ -92,9 +92,12 @@ int runCook(const CookArgs& args, const Context& context) {
   options.diskCache = disk.get();
   graph::CookResult result;
   int stopSignal = 0;
+  // SIGINT, SIGTERM, SIGHUP cancel the cook; a second one stops at once, removing
+  // temporaries. Held until the command returns, so a second signal while the manifest and
+  // report are written still cleans up (restored defaults there would kill tfd mid-write).
+  StopSignals signals;
+  options.cancel = &StopSignals::cancelFlag();
   try {
-    StopSignals signals;  // SIGINT, SIGTERM, SIGHUP cancel the cook
-    options.cancel = &StopSignals::cancelFlag();
     graph::Evaluator evaluator;
     result = evaluator.cook(*graph, options);
     stopSignal = StopSignals::received();
