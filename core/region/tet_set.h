@@ -46,7 +46,7 @@ class TetSet {
   std::vector<int> tets() const;
   /// The tet across the face opposite local vertex i of `tet` (−1 on the domain surface).
   const std::array<int, 4>& neighbours(int tet) const { return rows_[tet].neighbours; }
-  /// Neighbours and centroids of the tets reached so far (shared with the distance fronts).
+  /// Neighbours and centroids of every tet (shared with the distance fronts).
   const TetRows& rows() const { return rows_; }
 
  private:
