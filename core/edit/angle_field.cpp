@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <deque>
+#include <optional>
 #include <string>
 
 #include "core/edit/reference_field.h"
@@ -112,94 +113,144 @@ std::vector<double> liftAngles(const RegionComplex& region, const std::vector<ch
   return theta;
 }
 
-JumpSolveResult solveJumpLaplacian(const TetMesh& mesh, const RegionComplex& region,
-                                   const std::vector<char>& held, const std::vector<double>& jumps,
-                                   std::vector<double>& values, int width,
-                                   const JumpSolveOptions& options, const Progress& progress) {
+struct JumpLaplacian::System {
+  std::vector<char> held;
+  std::vector<int> freeLocal, row;  ///< free local vertices; local vertex -> matrix row or -1
+  std::vector<double> weight;       ///< K_ij per local edge
+  linalg::CsrMatrix<double> a;
+  std::optional<linalg::AmgPreconditioner> amg;
+};
+
+JumpLaplacian::JumpLaplacian(const TetMesh& mesh, const RegionComplex& region,
+                             const std::vector<char>& held, const Progress& progress)
+    : region_(region), system_(std::make_unique<System>()) {
   const int n = static_cast<int>(region.vertices.size());
-  if (width < 1 || width > 4) throw Error("angle field: 1 to 4 columns");
-  if (held.size() != static_cast<std::size_t>(n) ||
-      values.size() != static_cast<std::size_t>(n) * width ||
-      jumps.size() != region.edges.size() * width) {
-    throw Error("angle field: held, values or jumps do not match the region");
-  }
-  JumpSolveResult result;
-  std::vector<int> freeLocal, freeMesh, row(n, -1);
+  if (held.size() != static_cast<std::size_t>(n))
+    throw Error("angle field: held does not match the region");
+  System& s = *system_;
+  s.held = held;
+  s.row.assign(n, -1);
   for (int i = 0; i < n; ++i) {
     if (held[i]) continue;
-    row[i] = static_cast<int>(freeLocal.size());
-    freeLocal.push_back(i);
-    freeMesh.push_back(region.vertices[i]);
+    s.row[i] = static_cast<int>(s.freeLocal.size());
+    s.freeLocal.push_back(i);
   }
-  result.freeVertices = static_cast<int>(freeLocal.size());
-  if (freeLocal.empty()) return result;
+  if (s.freeLocal.empty()) return;
   checkEveryFreePieceIsHeld(region, held);
-
-  for (int i : freeLocal) {
+  for (int i : s.freeLocal) {
     for (int t : mesh.vertexTets(region.vertices[i]))
       if (region.localTet(t) < 0)
         throw Error("angle field: free vertex " + std::to_string(region.vertices[i]) +
                     " has a tet outside the region");
   }
-  const std::vector<double> weight = edgeStiffness(mesh, region, row);
-  const int m = static_cast<int>(freeLocal.size());
-  linalg::CsrMatrix<double> a;
+  s.weight = edgeStiffness(mesh, region, s.row);
+  // K_FF row by row: the off-diagonals in neighbour order with the diagonal placed before the
+  // first higher column. Rows are independent: counted, then filled, in parallel.
+  const int m = static_cast<int>(s.freeLocal.size());
+  linalg::CsrMatrix<double>& a = s.a;
   a.rows = a.cols = m;
   a.start.assign(m + 1, 0);
-  std::vector<double> rhs(static_cast<std::size_t>(m) * width, 0.0), x(rhs.size());
-  for (int r = 0; r < m; ++r) {
-    const int i = freeLocal[r];
-    double offDiagonal = 0;
-    bool diagonalPlaced = false;
-    const auto placeDiagonal = [&] {
-      a.index.push_back(r);
-      a.value.push_back(0.0);  // set below, once the row's off-diagonal sum is known
-      diagonalPlaced = true;
-    };
-    std::size_t diagonal = 0;
-    for (int k = region.start[i]; k < region.start[i + 1]; ++k) {
-      const int j = region.neighbour[k], edge = region.neighbourEdge[k];
-      if (!diagonalPlaced && j > i) diagonal = a.index.size(), placeDiagonal();
-      const double kij = weight[edge];
-      offDiagonal += kij;
-      for (int c = 0; c < width; ++c)  // r_i = Σ_j K_ij g_ij (Eq. 6)
-        rhs[r * width + c] += kij * orientedJump(jumps[edge * width + c], i, j);
-      if (row[j] >= 0) {
-        a.index.push_back(row[j]);
-        a.value.push_back(kij);
-      } else {  // − Σ_{j held} K_ij θ_j
-        for (int c = 0; c < width; ++c) rhs[r * width + c] -= kij * values[j * width + c];
-      }
+  tbb::parallel_for(tbb::blocked_range<int>(0, m, 4096), [&](const tbb::blocked_range<int>& b) {
+    for (int r = b.begin(); r != b.end(); ++r) {
+      const int i = s.freeLocal[r];
+      int count = 1;  // the diagonal
+      for (int k = region.start[i]; k < region.start[i + 1]; ++k)
+        count += s.row[region.neighbour[k]] >= 0;
+      a.start[r + 1] = count;
     }
-    if (!diagonalPlaced) diagonal = a.index.size(), placeDiagonal();
-    a.value[diagonal] = -offDiagonal;  // rows of K sum to zero
-    a.start[r + 1] = static_cast<int>(a.index.size());
-    for (int c = 0; c < width; ++c) x[r * width + c] = values[i * width + c];
-  }
+  });
+  for (int r = 0; r < m; ++r) a.start[r + 1] += a.start[r];
+  a.index.resize(a.start[m]);
+  a.value.resize(a.start[m]);
+  tbb::parallel_for(tbb::blocked_range<int>(0, m, 4096), [&](const tbb::blocked_range<int>& b) {
+    for (int r = b.begin(); r != b.end(); ++r) {
+      const int i = s.freeLocal[r];
+      int at = a.start[r], diagonal = -1;
+      double offDiagonal = 0;
+      for (int k = region.start[i]; k < region.start[i + 1]; ++k) {
+        const int j = region.neighbour[k];
+        if (diagonal < 0 && j > i) diagonal = at++;
+        const double kij = s.weight[region.neighbourEdge[k]];
+        offDiagonal += kij;
+        if (s.row[j] >= 0) a.index[at] = s.row[j], a.value[at++] = kij;
+      }
+      if (diagonal < 0) diagonal = at++;
+      a.index[diagonal] = r;
+      a.value[diagonal] = -offDiagonal;  // rows of K sum to zero
+    }
+  });
   progress.throwIfCancelled();
-  const linalg::AmgPreconditioner amg(a);
+  s.amg.emplace(a);
+}
+
+JumpLaplacian::~JumpLaplacian() = default;
+JumpLaplacian::JumpLaplacian(JumpLaplacian&&) noexcept = default;
+
+JumpSolveResult JumpLaplacian::solve(const std::vector<double>& jumps, std::vector<double>& values,
+                                     int width, const JumpSolveOptions& options,
+                                     const Progress& progress) const {
+  const RegionComplex& region = region_;
+  const System& s = *system_;
+  const int n = static_cast<int>(region.vertices.size());
+  if (width < 1 || width > 4) throw Error("angle field: 1 to 4 columns");
+  if (values.size() != static_cast<std::size_t>(n) * width ||
+      jumps.size() != region.edges.size() * width) {
+    throw Error("angle field: held, values or jumps do not match the region");
+  }
+  JumpSolveResult result;
+  result.freeVertices = static_cast<int>(s.freeLocal.size());
+  if (s.freeLocal.empty()) return result;
+  const int m = static_cast<int>(s.freeLocal.size());
+  std::vector<double> rhs(static_cast<std::size_t>(m) * width, 0.0), x(rhs.size());
+  tbb::parallel_for(tbb::blocked_range<int>(0, m, 4096), [&](const tbb::blocked_range<int>& b) {
+    for (int r = b.begin(); r != b.end(); ++r) {
+      const int i = s.freeLocal[r];
+      for (int k = region.start[i]; k < region.start[i + 1]; ++k) {
+        const int j = region.neighbour[k], edge = region.neighbourEdge[k];
+        const double kij = s.weight[edge];
+        for (int c = 0; c < width; ++c)  // r_i = Σ_j K_ij g_ij (Eq. 6)
+          rhs[r * width + c] += kij * orientedJump(jumps[edge * width + c], i, j);
+        if (s.row[j] < 0) {  // − Σ_{j held} K_ij θ_j
+          for (int c = 0; c < width; ++c) rhs[r * width + c] -= kij * values[j * width + c];
+        }
+      }
+      for (int c = 0; c < width; ++c) x[r * width + c] = values[i * width + c];
+    }
+  });
+  progress.throwIfCancelled();
   const linalg::CgOptions cg{options.tolerance, options.maxIterations};
   linalg::CgResult solved;
   switch (width) {
     case 1:
-      solved = runCg<1>(a, rhs, x, amg, cg, progress);
+      solved = runCg<1>(s.a, rhs, x, *s.amg, cg, progress);
       break;
     case 2:
-      solved = runCg<2>(a, rhs, x, amg, cg, progress);
+      solved = runCg<2>(s.a, rhs, x, *s.amg, cg, progress);
       break;
     case 3:
-      solved = runCg<3>(a, rhs, x, amg, cg, progress);
+      solved = runCg<3>(s.a, rhs, x, *s.amg, cg, progress);
       break;
     default:
-      solved = runCg<4>(a, rhs, x, amg, cg, progress);
+      solved = runCg<4>(s.a, rhs, x, *s.amg, cg, progress);
       break;
   }
-
   for (int r = 0; r < m; ++r)
-    for (int c = 0; c < width; ++c) values[freeLocal[r] * width + c] = x[r * width + c];
+    for (int c = 0; c < width; ++c) values[s.freeLocal[r] * width + c] = x[r * width + c];
   result.iterations = solved.iterations;
   result.relativeResidual = solved.relativeResidual;
   return result;
+}
+
+JumpSolveResult solveJumpLaplacian(const TetMesh& mesh, const RegionComplex& region,
+                                   const std::vector<char>& held, const std::vector<double>& jumps,
+                                   std::vector<double>& values, int width,
+                                   const JumpSolveOptions& options, const Progress& progress) {
+  if (width < 1 || width > 4) throw Error("angle field: 1 to 4 columns");
+  if (held.size() != region.vertices.size() || values.size() != region.vertices.size() * width ||
+      jumps.size() != region.edges.size() * width) {
+    throw Error("angle field: held, values or jumps do not match the region");
+  }
+  return JumpLaplacian(mesh, region, held, progress).solve(jumps, values, width, options, progress);
 }
 
 }  // namespace tfd::core

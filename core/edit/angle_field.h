@@ -10,6 +10,7 @@
 // solve of §5), which is how the eigenvalues are solved alongside θ, as further columns.
 // Solved by conjugate gradients with the smoothed-aggregation multigrid of core/linalg, all
 // columns at once; deterministic for any thread count. Cost proportional to the region.
+#include <memory>
 #include <vector>
 
 #include "core/edit/region_complex.h"
@@ -40,12 +41,34 @@ struct JumpSolveResult {
   double relativeResidual = 0;
 };
 
-/// Solves Equation 6 for `width` (1..4) columns at the region's free vertices (`held[i] == 0`,
-/// i local). `values` holds width numbers per local vertex (vertex-major): held entries are
-/// kept, free ones are the initial guess and receive the solution. `jumps` holds width numbers
-/// per local edge (from its lower to its higher vertex). Every tet around a free vertex must be
-/// a region tet. Throws core::Error when that fails, or when a connected set of free vertices
-/// has no held neighbour (no unique solution), or the solver does not converge.
+/// K_FF of Equation 6 for one region and held set, with its multigrid: built once, then solved
+/// for any jumps and columns. It depends only on the mesh, the region and which vertices are
+/// held, so it can be built while the jumps are still being computed (singularity_free_field).
+/// Throws core::Error when a free vertex has a tet outside the region, or when a connected set
+/// of free vertices has no held neighbour (no unique solution).
+class JumpLaplacian {
+ public:
+  JumpLaplacian(const TetMesh& mesh, const RegionComplex& region, const std::vector<char>& held,
+                const Progress& progress = {});
+  ~JumpLaplacian();
+  JumpLaplacian(JumpLaplacian&&) noexcept;
+
+  /// Solves for `width` (1..4) columns at the free vertices (`held[i] == 0`, i local).
+  /// `values` holds width numbers per local vertex (vertex-major): held entries are kept, free
+  /// ones are the initial guess and receive the solution. `jumps` holds width numbers per local
+  /// edge (from its lower to its higher vertex). Throws core::Error when the sizes do not match
+  /// the region or the solver does not converge.
+  JumpSolveResult solve(const std::vector<double>& jumps, std::vector<double>& values, int width,
+                        const JumpSolveOptions& options = {}, const Progress& progress = {}) const;
+
+ private:
+  struct System;
+  const RegionComplex& region_;
+  std::unique_ptr<System> system_;
+};
+
+/// JumpLaplacian(mesh, region, held).solve(jumps, values, width, options): Equation 6 solved
+/// once. Every tet around a free vertex must be a region tet.
 JumpSolveResult solveJumpLaplacian(const TetMesh& mesh, const RegionComplex& region,
                                    const std::vector<char>& held, const std::vector<double>& jumps,
                                    std::vector<double>& values, int width,

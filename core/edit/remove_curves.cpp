@@ -1,9 +1,12 @@
 #include "core/edit/remove_curves.h"
 
+#include <tbb/parallel_invoke.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <limits>
 #include <optional>
 
@@ -127,6 +130,34 @@ int defectOwner(const TetMesh& mesh, int face) {
                        editNumber(d) + " away: the region would have to cut it");
 }
 
+/// What a try reads off its region: the independent ball check, and meanwhile (both only read
+/// the region) its vertices, complex and vectorised eigenvector. An error of the vectorisation
+/// is kept for the point where the checks in their order would meet it.
+struct RegionExamination {
+  BallCheck ball;
+  RegionVertices vertices;
+  std::optional<RegionComplex> complex;
+  std::optional<VectorisedEigenvector> vec;
+  std::exception_ptr error;
+};
+
+RegionExamination examineRegion(const TensorField& field, const std::vector<int>& tets,
+                                DegenerateType type) {
+  const TetMesh& mesh = field.mesh();
+  RegionExamination x;
+  tbb::parallel_invoke([&] { x.ball = checkTopologicalBall(mesh, tets); },
+                       [&] {
+                         x.vertices = regionVertices(mesh, tets);
+                         try {
+                           x.complex.emplace(regionComplex(mesh, tets));
+                           x.vec.emplace(vectoriseEigenvector(field, *x.complex, type));
+                         } catch (const Error&) {
+                           x.error = std::current_exception();
+                         }
+                       });
+  return x;
+}
+
 /// Forbids one more ring of tets (every tet around a vertex of a forbidden tet not caused by
 /// a sign conflict) around the other curves, unless that would take a seed: returns whether
 /// it did.
@@ -229,17 +260,18 @@ RemoveCurvesResult removeCurves(const TensorField& field, const RemoveCurvesOpti
       throw RemovalRefused("no ball region around the targets: " + region.growStop);
     }
     attempt.regionTets = region.tets.size();
-    const BallCheck ball = checkTopologicalBall(mesh, region.tets);
-    const RegionVertices rv = regionVertices(mesh, region.tets);
+    const RegionExamination x = examineRegion(field, region.tets, type);
+    const RegionVertices& rv = x.vertices;
     TensorField edited = field;
-    if (!ball.ball) {
-      attempt.failedCheck = "region is a ball", attempt.detail = ball.problem;
+    if (!x.ball.ball) {
+      attempt.failedCheck = "region is a ball", attempt.detail = x.ball.problem;
     } else if (rv.free.size() == rv.vertices.size()) {
       attempt.failedCheck = "region leaves a held boundary";
       attempt.detail = "the region grew to the whole mesh: nothing outside it holds the field";
     } else {
-      const RegionComplex complex = regionComplex(mesh, region.tets);
-      const VectorisedEigenvector vec = vectoriseEigenvector(field, complex, type);
+      if (x.error) std::rethrow_exception(x.error);
+      const RegionComplex& complex = *x.complex;
+      const VectorisedEigenvector& vec = *x.vec;
       if (vec.signConflicts > 0 && report.conflictRegrowths < kConflictRegrowths) {
         // §6.1: the region holds no degenerate point but the targets'. A sign conflict marks
         // one of the other type (where the non-repeating eigenvector repeats) that no extracted

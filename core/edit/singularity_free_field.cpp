@@ -2,11 +2,13 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <sstream>
 
 #include "core/design/parallel_transport.h"
@@ -151,29 +153,38 @@ TensorField singularityFreeField(const TensorField& field, const RegionComplex& 
   r.freeVertices = r.regionVertices - r.heldVertices;
   if (r.heldVertices == 0) throw Error("singularity-free field: the region has no held vertex");
 
-  // Eigen-decomposition of the deviator at every region vertex (medium eigenvector, values).
+  // The Laplacian of Equation 6 and its multigrid depend only on which vertices are held: built
+  // while the directions are prepared and the reference field propagates (sequential, §6.3: a
+  // ball order).
   std::vector<EigenDecomposition> eig(count);
   std::vector<double> trace(count);
-  forEach(count, [&](int i) {
-    const Tensor& t = field.at(region.vertices[i]);
-    eig[i] = eigenDecompose(t.deviator());
-    trace[i] = t.trace();
-  });
+  std::optional<DirectionRepair> repaired;
+  ReferenceField ref;
+  std::optional<JumpLaplacian> laplacian;
+  tbb::parallel_invoke(
+      [&] {
+        // Eigen-decomposition of the deviator at every region vertex (medium eigenvector,
+        // values).
+        forEach(count, [&](int i) {
+          const Tensor& t = field.at(region.vertices[i]);
+          eig[i] = eigenDecompose(t.deviator());
+          trace[i] = t.trace();
+        });
+        progress.throwIfCancelled();
+        repaired = repairDirections(mesh, region, n.directions, fixed, eig, type,
+                                    smoothEveryFastTurn, progress);
+        progress.throwIfCancelled();
+        progress.report(0.2, "reference field and jumps");
+        const int seed = centralVertex(mesh, region);
+        ref = referenceField(mesh, region, repaired->directions, seed, eig[seed].vectors.col(1),
+                             report != nullptr);
+      },
+      [&] { laplacian.emplace(mesh, region, fixed, progress); });
+  const std::vector<Vec3>& directions = repaired->directions;
+  r.roughEdges = repaired->roughEdges;
+  r.repairedDirections = repaired->solvedVertices;
   bool hasTrace = false;
   for (int i = 0; i < count; ++i) hasTrace = hasTrace || (fixed[i] && trace[i] != 0);
-  progress.throwIfCancelled();
-
-  const DirectionRepair repaired =
-      repairDirections(mesh, region, n.directions, fixed, eig, type, smoothEveryFastTurn, progress);
-  const std::vector<Vec3>& directions = repaired.directions;
-  r.roughEdges = repaired.roughEdges;
-  r.repairedDirections = repaired.solvedVertices;
-  progress.throwIfCancelled();
-
-  progress.report(0.2, "reference field and jumps");
-  const int seed = centralVertex(mesh, region);
-  const ReferenceField ref =
-      referenceField(mesh, region, directions, seed, eig[seed].vectors.col(1), report != nullptr);
   r.nonBallSteps = ref.nonBallSteps;
   r.maxHolonomyDefect = ref.maxHolonomyDefect;
   progress.throwIfCancelled();
@@ -198,8 +209,7 @@ TensorField singularityFreeField(const TensorField& field, const RegionComplex& 
     if (hasTrace) values[i * width + 3] = trace[i];
   }
   for (std::size_t e = 0; e < region.edges.size(); ++e) jumps[e * width] = ref.jumps[e];
-  const JumpSolveResult solved =
-      solveJumpLaplacian(mesh, region, fixed, jumps, values, width, {}, progress);
+  const JumpSolveResult solved = laplacian->solve(jumps, values, width, {}, progress);
   r.iterations = solved.iterations;
   r.relativeResidual = solved.relativeResidual;
 

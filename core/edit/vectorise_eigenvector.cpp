@@ -22,8 +22,9 @@ double isolation(const EigenDecomposition& d, DegenerateType type, double norm) 
   return (type == DegenerateType::Linear ? l[0] - l[1] : l[1] - l[2]) / norm;
 }
 
-/// The region's vertices oriented along a maximum spanning tree of |e_u·e_v| from `seed`.
-void orientAlongTree(const RegionComplex& region, int seed, std::vector<Vec3>& dirs) {
+/// The region's vertices oriented along a maximum spanning tree of |e_u·e_v| from `seed`;
+/// returns how many it reached (all of them unless the region is not connected).
+int orientAlongTree(const RegionComplex& region, int seed, std::vector<Vec3>& dirs) {
   const int n = static_cast<int>(region.vertices.size());
   std::vector<char> done(n, 0);
   // (weight, −vertex, parent): the largest weight first, then the smallest vertex id (the
@@ -41,15 +42,18 @@ void orientAlongTree(const RegionComplex& region, int seed, std::vector<Vec3>& d
   };
   done[seed] = 1;
   push(seed);
+  int reached = 1;
   while (!queue.empty()) {
     const auto [weight, negTo, from] = queue.top();
     queue.pop();
     const int to = -negTo;
     if (done[to]) continue;
     done[to] = 1;
+    ++reached;
     if (dirs[from].dot(dirs[to]) < 0) dirs[to] = -dirs[to];
     push(to);
   }
+  return reached;
 }
 
 }  // namespace
@@ -64,11 +68,6 @@ VectorisedEigenvector vectoriseEigenvector(const TensorField& field,
 
 VectorisedEigenvector vectoriseEigenvector(const TensorField& field, const RegionComplex& region,
                                            DegenerateType type) {
-  const int pieces = region.components();
-  if (pieces != 1) {
-    throw Error("vectorise eigenvector: the region is not connected (" + std::to_string(pieces) +
-                " pieces)");
-  }
   const int n = static_cast<int>(region.vertices.size());
   const int column = nonRepeatingColumn(type);
   std::vector<Vec3> dirs(n);
@@ -87,16 +86,26 @@ VectorisedEigenvector vectoriseEigenvector(const TensorField& field, const Regio
   int axis = 0;
   dirs[seed].cwiseAbs().maxCoeff(&axis);
   if (dirs[seed][axis] < 0) dirs[seed] = -dirs[seed];
-  orientAlongTree(region, seed, dirs);
+  if (orientAlongTree(region, seed, dirs) != n) {
+    throw Error("vectorise eigenvector: the region is not connected (" +
+                std::to_string(region.components()) + " pieces)");
+  }
 
   VectorisedEigenvector out;
-  for (std::size_t e = 0; e < region.edges.size(); ++e) {
-    const auto& ends = field.mesh().edges()[region.edges[e]];
-    const int a = region.localVertex(ends[0]), b = region.localVertex(ends[1]);
-    if (dirs[a].dot(dirs[b]) < 0) {
-      ++out.signConflicts;
-      out.conflictEdges.push_back(region.edges[e]);
-    }
+  const int edgeCount = static_cast<int>(region.edges.size());
+  std::vector<char> conflict(edgeCount, 0);
+  tbb::parallel_for(tbb::blocked_range<int>(0, edgeCount, 4096),
+                    [&](const tbb::blocked_range<int>& r) {
+                      for (int e = r.begin(); e != r.end(); ++e) {
+                        const auto& ends = field.mesh().edges()[region.edges[e]];
+                        const int a = region.localVertex(ends[0]), b = region.localVertex(ends[1]);
+                        conflict[e] = dirs[a].dot(dirs[b]) < 0;
+                      }
+                    });
+  for (int e = 0; e < edgeCount; ++e) {
+    if (!conflict[e]) continue;
+    ++out.signConflicts;
+    out.conflictEdges.push_back(region.edges[e]);
   }
   out.seed = region.vertices[seed];
   out.vertices = region.vertices;

@@ -169,5 +169,30 @@ TEST(AngleField, SameResultForOneAndTwoThreads) {
   EXPECT_EQ(run(1), run(2));
 }
 
+TEST(AngleField, OneSystemSolvesEachRightHandSideLikeAFreshSolve) {
+  const auto mesh = jittered(8, 11);
+  const Ball ball(*mesh, Vec3(0.1, -0.1, 0.05), 0.7);
+  const int n = static_cast<int>(ball.region.vertices.size());
+  const JumpLaplacian system(*mesh, ball.region, ball.held);
+  for (int width : {1, 3}) {
+    std::vector<double> values(std::size_t(n) * width), jumps(ball.region.edges.size() * width);
+    for (std::size_t i = 0; i < values.size(); ++i) values[i] = std::sin(0.3 * i + width);
+    for (std::size_t e = 0; e < jumps.size(); ++e) jumps[e] = 0.05 * std::cos(0.7 * e * width);
+    std::vector<double> once = values, fresh = values;
+    const JumpSolveResult a = system.solve(jumps, once, width);
+    const JumpSolveResult b =
+        solveJumpLaplacian(*mesh, ball.region, ball.held, jumps, fresh, width);
+    EXPECT_EQ(once, fresh) << width << " columns";
+    EXPECT_EQ(a.iterations, b.iterations);
+    EXPECT_GT(a.iterations, 0);
+    EXPECT_EQ(a.freeVertices, ball.count(false));
+  }
+  std::vector<double> values(n), tooFewJumps(ball.region.edges.size() - 1);
+  EXPECT_THROW(system.solve(tooFewJumps, values, 1), Error);
+  EXPECT_THROW(system.solve(std::vector<double>(ball.region.edges.size()), values, 5), Error);
+  std::vector<char> shortHeld(ball.held.begin(), ball.held.end() - 1);
+  EXPECT_THROW(JumpLaplacian(*mesh, ball.region, shortHeld), Error);
+}
+
 }  // namespace
 }  // namespace tfd::core

@@ -2,7 +2,9 @@
 // principles (std::set of the tets' vertices, edges and vertex pairs) on random tet subsets of
 // a jittered box: lists, CSR adjacency and the O(1) lookups, including ids outside the region.
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
+#include <algorithm>
 #include <random>
 #include <set>
 
@@ -69,6 +71,33 @@ TEST(RegionComplex, MatchesSetsOfTheTetsVerticesEdgesAndVertexPairs) {
   }
   EXPECT_THROW(regionComplex(*mesh, {}), Error);
   EXPECT_THROW(regionComplex(*mesh, {0, int(mesh->tetCount())}), Error);
+}
+
+bool sameComplex(const RegionComplex& a, const RegionComplex& b) {
+  return a.tets == b.tets && a.vertices == b.vertices && a.edges == b.edges && a.start == b.start &&
+         a.neighbour == b.neighbour && a.neighbourEdge == b.neighbourEdge;
+}
+
+// An ascending region (as region growing gives) of most of the mesh takes the path without the
+// sort: the same complex as from a shuffled list with repeats, and the same for one and two
+// threads (the adjacency is placed in parallel, in any order, then sorted).
+TEST(RegionComplex, LargeAscendingRegionMatchesAShuffledListAndOneThread) {
+  const auto mesh = testing::jitteredBox(14, 0.15);
+  std::vector<int> ascending;
+  for (int t = 0; t < int(mesh->tetCount()); ++t)
+    if (t % 7 != 3) ascending.push_back(t);
+  std::vector<int> shuffled = ascending;
+  shuffled.insert(shuffled.end(), ascending.begin(), ascending.begin() + 500);
+  std::shuffle(shuffled.begin(), shuffled.end(), std::mt19937(8));
+  const RegionComplex fast = regionComplex(*mesh, ascending);
+  EXPECT_TRUE(sameComplex(fast, regionComplex(*mesh, shuffled)));
+  const RegionComplex single = [&] {
+    tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+    return regionComplex(*mesh, ascending);
+  }();
+  EXPECT_TRUE(sameComplex(fast, single));
+  for (std::size_t i = 0; i < fast.tets.size(); ++i) ASSERT_EQ(fast.localTet(fast.tets[i]), int(i));
+  EXPECT_EQ(fast.localTet(3), -1);
 }
 
 }  // namespace
