@@ -161,6 +161,7 @@ TensorField singularityFreeField(const TensorField& field, const RegionComplex& 
   std::optional<DirectionRepair> repaired;
   ReferenceField ref;
   std::optional<JumpLaplacian> laplacian;
+  progress.report(0.1, "eigenvectors, reference field and the Laplacian");  // not from a worker
   tbb::parallel_invoke(
       [&] {
         // Eigen-decomposition of the deviator at every region vertex (medium eigenvector,
@@ -174,7 +175,6 @@ TensorField singularityFreeField(const TensorField& field, const RegionComplex& 
         repaired = repairDirections(mesh, region, n.directions, fixed, eig, type,
                                     smoothEveryFastTurn, progress);
         progress.throwIfCancelled();
-        progress.report(0.2, "reference field and jumps");
         const int seed = centralVertex(mesh, region);
         ref = referenceField(mesh, region, repaired->directions, seed, eig[seed].vectors.col(1),
                              report != nullptr);
