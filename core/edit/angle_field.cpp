@@ -114,7 +114,6 @@ std::vector<double> liftAngles(const RegionComplex& region, const std::vector<ch
 }
 
 struct JumpLaplacian::System {
-  std::vector<char> held;
   std::vector<int> freeLocal, row;  ///< free local vertices; local vertex -> matrix row or -1
   std::vector<double> weight;       ///< K_ij per local edge
   linalg::CsrMatrix<double> a;
@@ -128,7 +127,6 @@ JumpLaplacian::JumpLaplacian(const TetMesh& mesh, const RegionComplex& region,
   if (held.size() != static_cast<std::size_t>(n))
     throw Error("angle field: held does not match the region");
   System& s = *system_;
-  s.held = held;
   s.row.assign(n, -1);
   for (int i = 0; i < n; ++i) {
     if (held[i]) continue;
@@ -195,7 +193,7 @@ JumpSolveResult JumpLaplacian::solve(const std::vector<double>& jumps, std::vect
   if (width < 1 || width > 4) throw Error("angle field: 1 to 4 columns");
   if (values.size() != static_cast<std::size_t>(n) * width ||
       jumps.size() != region.edges.size() * width) {
-    throw Error("angle field: held, values or jumps do not match the region");
+    throw Error("angle field: values or jumps do not match the region");
   }
   JumpSolveResult result;
   result.freeVertices = static_cast<int>(s.freeLocal.size());
@@ -245,6 +243,7 @@ JumpSolveResult solveJumpLaplacian(const TetMesh& mesh, const RegionComplex& reg
                                    const std::vector<char>& held, const std::vector<double>& jumps,
                                    std::vector<double>& values, int width,
                                    const JumpSolveOptions& options, const Progress& progress) {
+  // The sizes first, before the set-up's own checks (as the one-step solve always did).
   if (width < 1 || width > 4) throw Error("angle field: 1 to 4 columns");
   if (held.size() != region.vertices.size() || values.size() != region.vertices.size() * width ||
       jumps.size() != region.edges.size() * width) {

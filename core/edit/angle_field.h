@@ -45,7 +45,8 @@ struct JumpSolveResult {
 /// for any jumps and columns. It depends only on the mesh, the region and which vertices are
 /// held, so it can be built while the jumps are still being computed (singularity_free_field).
 /// Throws core::Error when a free vertex has a tet outside the region, or when a connected set
-/// of free vertices has no held neighbour (no unique solution).
+/// of free vertices has no held neighbour (no unique solution). Keeps a reference to `region`,
+/// which must outlive it.
 class JumpLaplacian {
  public:
   JumpLaplacian(const TetMesh& mesh, const RegionComplex& region, const std::vector<char>& held,
