@@ -3,6 +3,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <deque>
@@ -50,23 +51,30 @@ std::vector<double> edgeStiffness(const TetMesh& mesh, const RegionComplex& regi
                                   const std::vector<int>& row) {
   const int count = static_cast<int>(region.tets.size());
   const auto& pos = mesh.positions();
-  std::vector<std::array<double, 6>> perTet(count);
-  std::vector<char> wanted(count, 0);
-  tbb::parallel_for(tbb::blocked_range<int>(0, count, 1024), [&](const tbb::blocked_range<int>& r) {
-    for (int lt = r.begin(); lt != r.end(); ++lt) {
-      const auto& v = mesh.tets()[region.tets[lt]];
-      bool touches = false;
-      for (int c = 0; c < 4; ++c) touches = touches || row[region.localVertex(v[c])] >= 0;
-      if (!touches) continue;
-      wanted[lt] = 1;
-      perTet[lt] = tetStiffness(pos[v[0]], pos[v[1]], pos[v[2]], pos[v[3]]);
-    }
-  });
+  // In chunks: the tets' stiffness in parallel into a buffer that stays in cache, then summed
+  // in ascending tet order.
+  constexpr int kChunk = 1 << 15;
+  std::vector<std::array<double, 6>> perTet(std::min(count, kChunk));
+  std::vector<char> wanted(perTet.size(), 0);
   std::vector<double> weight(region.edges.size(), 0.0);
-  for (int lt = 0; lt < count; ++lt) {  // sequential: each sum in ascending tet order
-    if (!wanted[lt]) continue;
-    const auto& edges = mesh.tetEdges()[region.tets[lt]];
-    for (int e = 0; e < 6; ++e) weight[region.localEdge(edges[e])] += perTet[lt][e];
+  for (int first = 0; first < count; first += kChunk) {
+    const int last = std::min(count, first + kChunk);
+    tbb::parallel_for(
+        tbb::blocked_range<int>(first, last, 1024), [&](const tbb::blocked_range<int>& r) {
+          for (int lt = r.begin(); lt != r.end(); ++lt) {
+            const auto& v = mesh.tets()[region.tets[lt]];
+            bool touches = false;
+            for (int c = 0; c < 4; ++c) touches = touches || row[region.localVertex(v[c])] >= 0;
+            wanted[lt - first] = touches;
+            if (touches)
+              perTet[lt - first] = tetStiffness(pos[v[0]], pos[v[1]], pos[v[2]], pos[v[3]]);
+          }
+        });
+    for (int lt = first; lt < last; ++lt) {  // sequential: each sum in ascending tet order
+      if (!wanted[lt - first]) continue;
+      const auto& edges = mesh.tetEdges()[region.tets[lt]];
+      for (int e = 0; e < 6; ++e) weight[region.localEdge(edges[e])] += perTet[lt - first][e];
+    }
   }
   return weight;
 }
