@@ -12,6 +12,7 @@
 #include "core/edit/reconnect_sheet.h"
 #include "core/edit/reconnect_verification.h"
 #include "core/edit/region_complex.h"
+#include "core/edit/region_examination.h"
 #include "core/edit/removal_scenario.h"
 #include "core/edit/vectorise_eigenvector.h"
 #include "core/region/ball_check.h"
@@ -277,11 +278,12 @@ ReconnectCurvesResult reconnectCurves(const TensorField& field, const ReconnectC
       attempt.failedCheck = check, attempt.detail = std::move(detail);
       return TryOutcome::Failed;
     };
-    const BallCheck ball = checkTopologicalBall(mesh, region.tets);
-    if (!ball.ball) return fail("region is a ball", ball.problem);
-    const RegionVertices rv = heldOnSurface(mesh, regionVertices(mesh, region.tets));
-    const RegionComplex complex = regionComplex(mesh, region.tets);
-    const VectorisedEigenvector vec = vectoriseEigenvector(field, complex, type);
+    const RegionExamination x = examineRegion(field, region.tets, type);
+    if (!x.ball.ball) return fail("region is a ball", x.ball.problem);
+    const RegionVertices rv = heldOnSurface(mesh, x.vertices);
+    x.throwIfFailed();
+    const RegionComplex& complex = *x.complex;
+    const VectorisedEigenvector& vec = *x.vec;
     if (vec.signConflicts > 0 && conflictRegrowths < kConflictRegrowths) {
       // §6.2 step 1: the region holds no degenerate point but the segments'. A sign conflict
       // marks one of the other type that no extracted curve covers: the tets around the

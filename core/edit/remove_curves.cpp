@@ -1,18 +1,16 @@
 #include "core/edit/remove_curves.h"
 
-#include <tbb/parallel_invoke.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <exception>
 #include <limits>
 #include <optional>
 
 #include "core/edit/angle_defects.h"
 #include "core/edit/edit_driver.h"
 #include "core/edit/edit_verification.h"
+#include "core/edit/region_examination.h"
 #include "core/edit/remove_two_loops.h"
 #include "core/edit/singularity_free_field.h"
 #include "core/edit/vectorise_eigenvector.h"
@@ -130,34 +128,6 @@ int defectOwner(const TetMesh& mesh, int face) {
                        editNumber(d) + " away: the region would have to cut it");
 }
 
-/// What a try reads off its region: the independent ball check, and meanwhile (both only read
-/// the region) its vertices, complex and vectorised eigenvector. An error of the vectorisation
-/// is kept for the point where the checks in their order would meet it.
-struct RegionExamination {
-  BallCheck ball;
-  RegionVertices vertices;
-  std::optional<RegionComplex> complex;
-  std::optional<VectorisedEigenvector> vec;
-  std::exception_ptr error;
-};
-
-RegionExamination examineRegion(const TensorField& field, const std::vector<int>& tets,
-                                DegenerateType type) {
-  const TetMesh& mesh = field.mesh();
-  RegionExamination x;
-  tbb::parallel_invoke([&] { x.ball = checkTopologicalBall(mesh, tets); },
-                       [&] {
-                         x.vertices = regionVertices(mesh, tets);
-                         try {
-                           x.complex.emplace(regionComplex(mesh, tets));
-                           x.vec.emplace(vectoriseEigenvector(field, *x.complex, type));
-                         } catch (const Error&) {
-                           x.error = std::current_exception();
-                         }
-                       });
-  return x;
-}
-
 /// Forbids one more ring of tets (every tet around a vertex of a forbidden tet not caused by
 /// a sign conflict) around the other curves, unless that would take a seed: returns whether
 /// it did.
@@ -269,7 +239,7 @@ RemoveCurvesResult removeCurves(const TensorField& field, const RemoveCurvesOpti
       attempt.failedCheck = "region leaves a held boundary";
       attempt.detail = "the region grew to the whole mesh: nothing outside it holds the field";
     } else {
-      if (x.error) std::rethrow_exception(x.error);
+      x.throwIfFailed();
       const RegionComplex& complex = *x.complex;
       const VectorisedEigenvector& vec = *x.vec;
       if (vec.signConflicts > 0 && report.conflictRegrowths < kConflictRegrowths) {
