@@ -1,5 +1,7 @@
 #include "core/edit/angle_defects.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -37,19 +39,16 @@ AngleDefects angleDefects(const TensorField& field, const RegionComplex& region,
   const TetMesh& mesh = field.mesh();
   if (n.vertices != region.vertices || held.size() != mesh.vertexCount())
     throw Error("angle defects: directions or held flags do not match the region");
-  // The given field's medium eigenvector, decomposed on first use.
-  std::vector<Vec3> medium(region.vertices.size());
-  std::vector<char> known(region.vertices.size(), 0);
+  // The given field's medium eigenvector: from the vectorisation's decompositions when it
+  // kept them (the same decompositions), otherwise decomposed here.
+  const bool decomposed = n.eigen.size() == region.vertices.size();
   auto index = [&](const TetMesh::Face& f) {
     std::array<Vec3, 3> nf, mf;
     for (int i = 0; i < 3; ++i) {
       const int local = region.localVertex(f[i]);
-      if (!known[local]) {
-        medium[local] = eigenDecompose(field.at(f[i]).deviator()).vectors.col(1);
-        known[local] = 1;
-      }
       nf[i] = n.directions[local];
-      mf[i] = medium[local];
+      mf[i] =
+          (decomposed ? n.eigen[local] : eigenDecompose(field.at(f[i]).deviator())).vectors.col(1);
     }
     try {
       return lineFieldIndex(nf, mf);
@@ -57,24 +56,42 @@ AngleDefects angleDefects(const TensorField& field, const RegionComplex& region,
       return 1;  // opposite directions: no transport, no lift either
     }
   };
-  AngleDefects out;
-  std::vector<std::pair<int, int>> surface;  // (face, index)
-  for (int t : region.tets) {
-    for (int f : mesh.tetFaces()[t]) {
-      const auto& ft = mesh.faceTets()[f];
-      const int other = ft[0] == t ? ft[1] : ft[0];
-      if (other >= 0 && other < t && region.localTet(other) >= 0) continue;  // seen from other
-      const TetMesh::Face& v = mesh.faces()[f];
-      const bool heldTriangle = held[v[0]] && held[v[1]] && held[v[2]];
-      if (other < 0) {
-        const int k = index(mesh.orientedBoundaryFace(f));
-        surface.emplace_back(f, k);
-        if (heldTriangle && k != 0) ++out.heldTriangles, out.faces.push_back(f);
-      } else if (heldTriangle && index(v) != 0) {
-        ++out.heldTriangles;
-        out.faces.push_back(f);
+  // Each face once, from the lower of its region tets, in tet order: chunks of tets in
+  // parallel, their findings concatenated in chunk order.
+  constexpr std::size_t kChunk = 8192;
+  const std::size_t chunks = (region.tets.size() + kChunk - 1) / kChunk;
+  struct Found {
+    std::vector<std::pair<int, int>> surface;  // (face, index)
+    std::vector<int> heldFaces;                // held triangles with a non-zero index
+  };
+  std::vector<Found> found(chunks);
+  tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t c) {
+    Found& out = found[c];
+    const std::size_t end = std::min(region.tets.size(), (c + 1) * kChunk);
+    for (std::size_t k = c * kChunk; k < end; ++k) {
+      const int t = region.tets[k];
+      for (int f : mesh.tetFaces()[t]) {
+        const auto& ft = mesh.faceTets()[f];
+        const int other = ft[0] == t ? ft[1] : ft[0];
+        if (other >= 0 && other < t && region.localTet(other) >= 0) continue;  // seen from other
+        const TetMesh::Face& v = mesh.faces()[f];
+        const bool heldTriangle = held[v[0]] && held[v[1]] && held[v[2]];
+        if (other < 0) {
+          const int i = index(mesh.orientedBoundaryFace(f));
+          out.surface.emplace_back(f, i);
+          if (heldTriangle && i != 0) out.heldFaces.push_back(f);
+        } else if (heldTriangle && index(v) != 0) {
+          out.heldFaces.push_back(f);
+        }
       }
     }
+  });
+  AngleDefects out;
+  std::vector<std::pair<int, int>> surface;  // (face, index)
+  for (const Found& f : found) {
+    surface.insert(surface.end(), f.surface.begin(), f.surface.end());
+    out.faces.insert(out.faces.end(), f.heldFaces.begin(), f.heldFaces.end());
+    out.heldTriangles += static_cast<int>(f.heldFaces.size());
   }
   // Surface patches: the surface faces joined through shared edges.
   std::vector<std::tuple<int, int, int>> edges;  // (lower vertex, higher vertex, surface slot)

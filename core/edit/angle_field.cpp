@@ -129,7 +129,8 @@ struct JumpLaplacian::System {
 };
 
 JumpLaplacian::JumpLaplacian(const TetMesh& mesh, const RegionComplex& region,
-                             const std::vector<char>& held, const Progress& progress)
+                             const std::vector<char>& held, const Progress& progress,
+                             HeldCheck check)
     : region_(region), system_(std::make_unique<System>()) {
   const int n = static_cast<int>(region.vertices.size());
   if (held.size() != static_cast<std::size_t>(n))
@@ -142,12 +143,14 @@ JumpLaplacian::JumpLaplacian(const TetMesh& mesh, const RegionComplex& region,
     s.freeLocal.push_back(i);
   }
   if (s.freeLocal.empty()) return;
-  checkEveryFreePieceIsHeld(region, held);
-  for (int i : s.freeLocal) {
-    for (int t : mesh.vertexTets(region.vertices[i]))
-      if (region.localTet(t) < 0)
-        throw Error("angle field: free vertex " + std::to_string(region.vertices[i]) +
-                    " has a tet outside the region");
+  if (check == HeldCheck::Verify) {
+    checkEveryFreePieceIsHeld(region, held);
+    for (int i : s.freeLocal) {
+      for (int t : mesh.vertexTets(region.vertices[i]))
+        if (region.localTet(t) < 0)
+          throw Error("angle field: free vertex " + std::to_string(region.vertices[i]) +
+                      " has a tet outside the region");
+    }
   }
   s.weight = edgeStiffness(mesh, region, s.row);
   // K_FF row by row: the off-diagonals in neighbour order with the diagonal placed before the

@@ -49,8 +49,14 @@ struct JumpSolveResult {
 /// which must outlive it.
 class JumpLaplacian {
  public:
+  /// Whether the constructor verifies the conditions on `held` above.
+  enum class HeldCheck {
+    Verify,   ///< throws core::Error when they fail
+    Assumed,  ///< the caller guarantees them (the singularity-free field holds every vertex on a
+              ///< tet outside its region, which is connected and has a held vertex)
+  };
   JumpLaplacian(const TetMesh& mesh, const RegionComplex& region, const std::vector<char>& held,
-                const Progress& progress = {});
+                const Progress& progress = {}, HeldCheck check = HeldCheck::Verify);
   ~JumpLaplacian();
   JumpLaplacian(JumpLaplacian&&) noexcept;
 

@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <deque>
+#include <memory>
 #include <string>
 
 #include "core/design/parallel_transport.h"
@@ -31,7 +32,8 @@ class Propagation {
   Propagation(const TetMesh& mesh, const RegionComplex& region, const std::vector<Vec3>& n)
       : mesh_(mesh), region_(region), n_(n) {
     const int tets = static_cast<int>(region.tets.size());
-    tets_.resize(tets);
+    tets_.reset(new RegionTet[tets]);  // not zeroed: every entry is filled below, in parallel
+    tetCount_ = tets;
     // Each entry depends only on its tet: filled in parallel (the same for any thread count).
     tbb::parallel_for(tbb::blocked_range<int>(0, tets, 1024),
                       [&](const tbb::blocked_range<int>& b) {
@@ -67,7 +69,7 @@ class Propagation {
     add(seedTet);
     std::size_t count = 1;
     std::vector<int> deferred;
-    while (count < tets_.size()) {
+    while (count < tetCount_) {
       for (int t; (t = next()) >= 0;) {
         if (visited_[t]) continue;
         if (simple(t)) {
@@ -77,7 +79,7 @@ class Propagation {
           deferred.push_back(t);
         }
       }
-      if (count == tets_.size()) break;
+      if (count == tetCount_) break;
       // No tet keeps the set a ball: take the one sharing most faces (lowest index on ties).
       int best = -1, bestShared = 0;
       std::erase_if(deferred, [&](int t) { return visited_[t] != 0; });
@@ -87,7 +89,7 @@ class Propagation {
       }
       if (best < 0) {
         throw Error("reference field: the region is not connected through faces (" +
-                    std::to_string(tets_.size() - count) + " of " + std::to_string(tets_.size()) +
+                    std::to_string(tetCount_ - count) + " of " + std::to_string(tetCount_) +
                     " tets unreachable)");
       }
       ++out_.nonBallSteps;
@@ -140,7 +142,7 @@ class Propagation {
   /// maximum does not depend on the order.
   double maxHolonomyDefect() const {
     return tbb::parallel_reduce(
-        tbb::blocked_range<int>(0, static_cast<int>(tets_.size()), 1024), 0.0,
+        tbb::blocked_range<int>(0, static_cast<int>(tetCount_), 1024), 0.0,
         [&](const tbb::blocked_range<int>& b, double worst) {
           for (int t = b.begin(); t != b.end(); ++t) {
             const RegionTet& r = tets_[t];
@@ -235,7 +237,8 @@ class Propagation {
   const TetMesh& mesh_;
   const RegionComplex& region_;
   const std::vector<Vec3>& n_;
-  std::vector<RegionTet> tets_;
+  std::unique_ptr<RegionTet[]> tets_;
+  std::size_t tetCount_ = 0;
   std::vector<char> visited_, hasU_, known_;
   /// Per tet, its faces shared with visited tets (kept as tets join, instead of reading the
   /// four neighbours' flags: a random access each).

@@ -156,7 +156,11 @@ TensorField singularityFreeField(const TensorField& field, const RegionComplex& 
   // The Laplacian of Equation 6 and its multigrid depend only on which vertices are held: built
   // while the directions are prepared and the reference field propagates (sequential, §6.3: a
   // ball order).
-  std::vector<EigenDecomposition> eig(count);
+  // The deviator's eigen-decomposition per region vertex (medium eigenvector, values): the
+  // vectorisation's when it kept them (the same decompositions of the same tensors).
+  const bool decomposed = n.eigen.size() == static_cast<std::size_t>(count);
+  std::vector<EigenDecomposition> computed(decomposed ? 0 : count);
+  const std::vector<EigenDecomposition>& eig = decomposed ? n.eigen : computed;
   std::vector<double> trace(count);
   std::optional<DirectionRepair> repaired;
   ReferenceField ref;
@@ -164,11 +168,9 @@ TensorField singularityFreeField(const TensorField& field, const RegionComplex& 
   progress.report(0.1, "eigenvectors, reference field and the Laplacian");  // not from a worker
   tbb::parallel_invoke(
       [&] {
-        // Eigen-decomposition of the deviator at every region vertex (medium eigenvector,
-        // values).
         forEach(count, [&](int i) {
           const Tensor& t = field.at(region.vertices[i]);
-          eig[i] = eigenDecompose(t.deviator());
+          if (!decomposed) computed[i] = eigenDecompose(t.deviator());
           trace[i] = t.trace();
         });
         progress.throwIfCancelled();
@@ -179,7 +181,7 @@ TensorField singularityFreeField(const TensorField& field, const RegionComplex& 
         ref = referenceField(mesh, region, repaired->directions, seed, eig[seed].vectors.col(1),
                              report != nullptr);
       },
-      [&] { laplacian.emplace(mesh, region, fixed, progress); });
+      [&] { laplacian.emplace(mesh, region, fixed, progress, JumpLaplacian::HeldCheck::Assumed); });
   const std::vector<Vec3>& directions = repaired->directions;
   r.roughEdges = repaired->roughEdges;
   r.repairedDirections = repaired->solvedVertices;
@@ -198,17 +200,24 @@ TensorField singularityFreeField(const TensorField& field, const RegionComplex& 
       raw[i] = signedAngle(ref.reference[i], eig[i].vectors.col(1), directions[i]);
     }
   });
-  const std::vector<double> theta =
-      liftAngles(region, fixed, raw, ref.jumps, std::numbers::pi);  // the medium one is a line
+  // The held angles lifted along the jumps (sequential; period π: the medium eigenvector is a
+  // line) while the jump columns are laid out.
+  std::vector<double> theta, jumps;
+  tbb::parallel_invoke([&] { theta = liftAngles(region, fixed, raw, ref.jumps, std::numbers::pi); },
+                       [&] {
+                         jumps.resize(region.edges.size() * width);
+                         forEach(static_cast<int>(region.edges.size()), [&](int e) {
+                           jumps[e * width] = ref.jumps[e];
+                           for (int c = 1; c < width; ++c) jumps[e * width + c] = 0;
+                         });
+                       });
   std::vector<double> values(static_cast<std::size_t>(count) * width);
-  std::vector<double> jumps(region.edges.size() * width, 0.0);
-  for (int i = 0; i < count; ++i) {
+  forEach(count, [&](int i) {
     values[i * width] = theta[i];
     values[i * width + 1] = eig[i].values[0];
     values[i * width + 2] = eig[i].values[2];
     if (hasTrace) values[i * width + 3] = trace[i];
-  }
-  for (std::size_t e = 0; e < region.edges.size(); ++e) jumps[e * width] = ref.jumps[e];
+  });
   const JumpSolveResult solved = laplacian->solve(jumps, values, width, {}, progress);
   r.iterations = solved.iterations;
   r.relativeResidual = solved.relativeResidual;

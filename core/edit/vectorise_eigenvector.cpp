@@ -2,9 +2,11 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <string>
 #include <tuple>
 
@@ -56,6 +58,51 @@ int orientAlongTree(const RegionComplex& region, int seed, std::vector<Vec3>& di
   return reached;
 }
 
+/// The orientation in which every region edge joins directions with a positive dot product,
+/// found by a breadth-first traversal from `seed` (whose sign is kept); nullopt when the
+/// traversal's signs leave some edge at a dot ≤ 0 (a sign conflict, or an edge of
+/// perpendicular directions). Such an orientation is the only one in which no edge disagrees:
+/// along any path each sign follows from the previous one through a non-zero dot. So it is
+/// also the orientation of the spanning tree of orientAlongTree(), which only the
+/// inconsistent case needs. Throws when the region is not connected.
+std::optional<std::vector<char>> consistentFlips(const RegionComplex& region, int seed,
+                                                 const std::vector<Vec3>& dirs) {
+  const int n = static_cast<int>(region.vertices.size());
+  std::vector<char> reached(n, 0), flip(n, 0);
+  std::vector<int> queue;
+  queue.reserve(n);
+  queue.push_back(seed);
+  reached[seed] = 1;
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    const int from = queue[head];
+    for (int k = region.start[from]; k < region.start[from + 1]; ++k) {
+      const int to = region.neighbour[k];
+      if (reached[to]) continue;
+      reached[to] = 1;
+      flip[to] = flip[from] ^ (dirs[from].dot(dirs[to]) < 0);
+      queue.push_back(to);
+    }
+  }
+  if (static_cast<int>(queue.size()) != n) {
+    throw Error("vectorise eigenvector: the region is not connected (" +
+                std::to_string(region.components()) + " pieces)");
+  }
+  const bool consistent = tbb::parallel_reduce(
+      tbb::blocked_range<int>(0, n, 2048), true,
+      [&](const tbb::blocked_range<int>& r, bool ok) {
+        for (int i = r.begin(); i != r.end() && ok; ++i)
+          for (int k = region.start[i]; k < region.start[i + 1] && ok; ++k) {
+            const int j = region.neighbour[k];
+            const double dot = dirs[i].dot(dirs[j]);
+            ok = j < i || (flip[i] == flip[j] ? dot > 0 : dot < 0);
+          }
+        return ok;
+      },
+      [](bool a, bool b) { return a && b; });
+  if (!consistent) return std::nullopt;
+  return flip;
+}
+
 }  // namespace
 
 int nonRepeatingColumn(DegenerateType type) { return type == DegenerateType::Linear ? 0 : 2; }
@@ -72,10 +119,11 @@ VectorisedEigenvector vectoriseEigenvector(const TensorField& field, const Regio
   const int column = nonRepeatingColumn(type);
   std::vector<Vec3> dirs(n);
   std::vector<double> gap(n);
+  std::vector<EigenDecomposition> eigen(n);
   tbb::parallel_for(tbb::blocked_range<int>(0, n, 256), [&](const tbb::blocked_range<int>& r) {
     for (int i = r.begin(); i != r.end(); ++i) {
       const Tensor a = field.at(region.vertices[i]).deviator();
-      const EigenDecomposition d = eigenDecompose(a);
+      const EigenDecomposition& d = eigen[i] = eigenDecompose(a);
       dirs[i] = d.vectors.col(column).normalized();
       gap[i] = isolation(d, type, a.norm());
     }
@@ -86,12 +134,19 @@ VectorisedEigenvector vectoriseEigenvector(const TensorField& field, const Regio
   int axis = 0;
   dirs[seed].cwiseAbs().maxCoeff(&axis);
   if (dirs[seed][axis] < 0) dirs[seed] = -dirs[seed];
-  if (orientAlongTree(region, seed, dirs) != n) {
-    throw Error("vectorise eigenvector: the region is not connected (" +
-                std::to_string(region.components()) + " pieces)");
-  }
-
   VectorisedEigenvector out;
+  out.seed = region.vertices[seed];
+  out.vertices = region.vertices;
+  out.eigen = std::move(eigen);
+  if (const auto flips = consistentFlips(region, seed, dirs)) {  // the usual case
+    tbb::parallel_for(tbb::blocked_range<int>(0, n, 4096), [&](const tbb::blocked_range<int>& r) {
+      for (int i = r.begin(); i != r.end(); ++i)
+        if ((*flips)[i]) dirs[i] = -dirs[i];
+    });
+    out.directions = std::move(dirs);
+    return out;
+  }
+  orientAlongTree(region, seed, dirs);  // connected: consistentFlips() checked
   const int edgeCount = static_cast<int>(region.edges.size());
   std::vector<char> conflict(edgeCount, 0);
   tbb::parallel_for(tbb::blocked_range<int>(0, edgeCount, 4096),
@@ -107,8 +162,6 @@ VectorisedEigenvector vectoriseEigenvector(const TensorField& field, const Regio
     ++out.signConflicts;
     out.conflictEdges.push_back(region.edges[e]);
   }
-  out.seed = region.vertices[seed];
-  out.vertices = region.vertices;
   out.directions = std::move(dirs);
   return out;
 }

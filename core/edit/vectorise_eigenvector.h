@@ -9,12 +9,14 @@
 // Inputs: a field, the region's tets, and the L/P type of the degenerate points the edit is
 // about. Output: one unit direction per region vertex. Transport in R³ is the identity, so a
 // vertex takes the sign that agrees with the already oriented neighbour it is reached from.
-// Vertices are reached along a maximum spanning tree of the weights |e_u·e_v| (Prim's order,
-// ties by vertex id): signs are decided across the best-aligned edges first, so the result does
-// not depend on a traversal that crosses nearly perpendicular eigenvectors early. The seed is
-// the vertex whose eigenvalue is most isolated (relative to ‖A‖), oriented so its largest
-// component is positive. Deterministic for any thread count (the eigen-decompositions run in
-// parallel, one slot per vertex; the tree is sequential).
+// When some orientation makes every region edge agree (positive dot product: the usual case),
+// it is the only one, whatever the traversal; a breadth-first one finds it. Otherwise vertices
+// are reached along a maximum spanning tree of the weights |e_u·e_v| (Prim's order, ties by
+// vertex id): signs are decided across the best-aligned edges first, so the disagreeing edges
+// are the least aligned ones. The seed is the vertex whose eigenvalue is most isolated
+// (relative to ‖A‖), oriented so its largest component is positive. Deterministic for any
+// thread count (the eigen-decompositions and checks run in parallel, one slot per vertex; the
+// traversals are sequential).
 #include <vector>
 
 #include "core/degeneracy.h"
@@ -31,9 +33,12 @@ namespace tfd::core {
 struct VectorisedEigenvector {
   std::vector<int> vertices;     ///< region vertices, ascending
   std::vector<Vec3> directions;  ///< unit, one per entry of `vertices`
-  int signConflicts = 0;         ///< region edges whose two directions disagree in sign (0 when the
-                                 ///< region holds no degenerate point)
-  int seed = -1;                 ///< mesh id of the seed vertex
+  /// Per entry of `vertices`: the eigen-decomposition of the field's deviator there, whose
+  /// non-repeating column (up to sign) is the direction (kept for the singularity-free field).
+  std::vector<EigenDecomposition> eigen;
+  int signConflicts = 0;  ///< region edges whose two directions disagree in sign (0 when the
+                          ///< region holds no degenerate point)
+  int seed = -1;          ///< mesh id of the seed vertex
   /// Mesh ids of the edges counted in signConflicts, ascending. A region loop whose signs
   /// cannot agree encircles a point where this eigenvector repeats; these edges form the cut
   /// where the tree's signs flip, which runs from that point (a degenerate point of the other

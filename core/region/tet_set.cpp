@@ -1,5 +1,10 @@
 #include "core/region/tet_set.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <atomic>
+
 namespace tfd::core {
 namespace {
 
@@ -28,25 +33,40 @@ TetSet::TetSet(const TetMesh& mesh)
   }
 }
 
-// Tets around an edge: those around both ends (sorted lists), counted on first use, so a
-// set costs in proportion to the tets it touches rather than to the mesh.
-int TetSet::tetsAround(int edge) const {
-  int& n = edgeTets_[edge];
-  if (n < 0) {
-    const auto& ends = mesh_.edges()[edge];
-    const auto a = mesh_.vertexTets(ends[0]), b = mesh_.vertexTets(ends[1]);
-    n = 0;
-    for (std::size_t i = 0, j = 0; i < a.size() && j < b.size();) {
-      if (a[i] < b[j]) {
-        ++i;
-      } else if (b[j] < a[i]) {
-        ++j;
-      } else {
-        ++n, ++i, ++j;
-      }
-    }
+namespace {
+
+/// Tets around the edge (a, b): those around a that also hold b.
+int countTetsAround(const TetMesh& mesh, const TetMesh::Edge& ends) {
+  int n = 0;
+  for (int t : mesh.vertexTets(ends[0])) {
+    const auto& v = mesh.tets()[t];
+    n += (v[0] == ends[1]) | (v[1] == ends[1]) | (v[2] == ends[1]) | (v[3] == ends[1]);
   }
   return n;
+}
+
+}  // namespace
+
+// Counted on first use, so a set costs in proportion to the tets it touches rather than to
+// the mesh.
+int TetSet::tetsAround(int edge) const {
+  int& n = edgeTets_[edge];
+  if (n < 0) n = countTetsAround(mesh_, mesh_.edges()[edge]);
+  return n;
+}
+
+void TetSet::prepareRemovals(std::span<const int> tets) const {
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tets.size(), 4096),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      for (std::size_t k = r.begin(); k != r.end(); ++k)
+                        for (int e : mesh_.tetEdges()[tets[k]]) {
+                          // Several tets share an edge: they store the same count.
+                          std::atomic_ref<int> n(edgeTets_[e]);
+                          if (n.load(std::memory_order_relaxed) < 0)
+                            n.store(countTetsAround(mesh_, mesh_.edges()[e]),
+                                    std::memory_order_relaxed);
+                        }
+                    });
 }
 
 int TetSet::sharedFaces(int tet) const {

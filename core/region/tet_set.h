@@ -14,6 +14,7 @@
 // Memory: a few bytes per tet, edge and vertex of the mesh.
 #include <array>
 #include <cstddef>
+#include <span>
 #include <vector>
 
 #include "core/region/tet_rows.h"
@@ -31,12 +32,17 @@ class TetSet {
   void prefetch(int tet) const {
     __builtin_prefetch(&in_[tet]);
     rows_.prefetch(tet);
+    __builtin_prefetch(&mesh_.tets()[tet]);      // the simple-tet test's corners
+    __builtin_prefetch(&mesh_.tetEdges()[tet]);  // or edges
   }
   std::size_t size() const { return size_; }
   /// Whether adding `tet` (not in the set) keeps a ball a ball; true for an empty set.
   bool canAdd(int tet) const;
   /// Whether removing `tet` (in the set) keeps a ball a ball; false for the last tet.
   bool canRemove(int tet) const;
+  /// Counts, in parallel, the tets around each edge of `tets` that canRemove() may ask for
+  /// (otherwise counted one by one on first use): for a shrink of many tets.
+  void prepareRemovals(std::span<const int> tets) const;
   /// Adds / removes without testing (the caller tests first when it must keep a ball).
   void add(int tet);
   void remove(int tet);

@@ -227,6 +227,20 @@ TEST(SingularityFreeField, SameResultForOneAndTwoThreads) {
     EXPECT_TRUE(bitwiseEqual(a.at(int(v)), b.at(int(v)))) << "vertex " << v;
 }
 
+TEST(SingularityFreeField, SameResultWithOrWithoutTheVectorisationsDecompositions) {
+  const ArchCase c;
+  const RegionComplex region = regionComplex(*c.mesh, c.region);
+  VectorisedEigenvector n = vectoriseEigenvector(c.field, region, DegenerateType::Linear);
+  ASSERT_EQ(n.eigen.size(), n.vertices.size());
+  const TensorField kept =
+      singularityFreeField(c.field, region, n, c.noHeld(), DegenerateType::Linear, {}, nullptr);
+  n.eigen.clear();  // decomposed again by the singularity-free field
+  const TensorField again =
+      singularityFreeField(c.field, region, n, c.noHeld(), DegenerateType::Linear, {}, nullptr);
+  for (std::size_t v = 0; v < c.mesh->vertexCount(); ++v)
+    ASSERT_TRUE(bitwiseEqual(kept.at(int(v)), again.at(int(v)))) << "vertex " << v;
+}
+
 TEST(SingularityFreeField, RefusesBadInput) {
   const ArchCase c;
   EXPECT_THROW(

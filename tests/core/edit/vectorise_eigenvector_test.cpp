@@ -4,9 +4,10 @@
 #include <tbb/global_control.h>
 #include <algorithm>
 #include <cmath>
+#include <queue>
+#include <tuple>
 
 #include <Eigen/Geometry>
-#include <cmath>
 
 #include "core/edit/vectorise_eigenvector.h"
 #include "core/error.h"
@@ -123,6 +124,72 @@ TEST(VectoriseEigenvector, RegionAroundADegenerateCurveHasConflictsOnlyForTheRep
   }
   ASSERT_FALSE(beside.empty());
   EXPECT_EQ(vectoriseEigenvector(field, beside, DegenerateType::Linear).signConflicts, 0);
+}
+
+/// Reference: the orientation of the maximum spanning tree of |e_u·e_v| from the seed (Prim's
+/// order with std::priority_queue, ties by vertex id), on the raw eigenvectors.
+std::vector<Vec3> primOrientation(const TensorField& field, const VectorisedEigenvector& v,
+                                  DegenerateType type) {
+  const TetMesh& mesh = field.mesh();
+  const int n = static_cast<int>(v.vertices.size());
+  auto local = [&](int vertex) {
+    return int(std::lower_bound(v.vertices.begin(), v.vertices.end(), vertex) - v.vertices.begin());
+  };
+  std::vector<std::vector<int>> adjacent(n);
+  for (const auto& e : mesh.edges()) {
+    const int a = local(e[0]), b = local(e[1]);
+    if (a < n && b < n && v.vertices[a] == e[0] && v.vertices[b] == e[1])
+      adjacent[a].push_back(b), adjacent[b].push_back(a);
+  }
+  std::vector<Vec3> dirs(n);
+  for (int i = 0; i < n; ++i)
+    dirs[i] = eigenDecompose(field.at(v.vertices[i]).deviator())
+                  .vectors.col(nonRepeatingColumn(type))
+                  .normalized();
+  const int seed = local(v.seed);
+  int axis = 0;
+  dirs[seed].cwiseAbs().maxCoeff(&axis);
+  if (dirs[seed][axis] < 0) dirs[seed] = -dirs[seed];  // the seed's largest component positive
+  std::vector<char> done(n, 0);
+  std::priority_queue<std::tuple<double, int, int>> queue;
+  auto push = [&](int from) {
+    for (int to : adjacent[from])
+      if (!done[to]) queue.emplace(std::abs(dirs[from].dot(dirs[to])), -to, from);
+  };
+  done[seed] = 1;
+  push(seed);
+  while (!queue.empty()) {
+    const auto [weight, negTo, from] = queue.top();
+    queue.pop();
+    if (done[-negTo]) continue;
+    done[-negTo] = 1;
+    if (dirs[from].dot(dirs[-negTo]) < 0) dirs[-negTo] = -dirs[-negTo];
+    push(-negTo);
+  }
+  return dirs;
+}
+
+TEST(VectoriseEigenvector, OrientationIsThatOfTheMaximumSpanningTreeWithOrWithoutConflicts) {
+  const auto mesh = makeBoxMesh(10, 10, 4, Vec3(-1.03, -0.97, -1), Vec3(0.97, 1.03, 1));
+  const std::vector<int> aroundAxis = tetsNearZAxis(*mesh, 0.7);
+  struct Case {
+    TensorField field;
+    std::vector<int> region;
+    DegenerateType type;
+    bool conflicts;
+  };
+  const std::vector<Case> cases = {
+      {rotatingField(mesh, Vec3(2.0, -0.5, -1.5)), allTets(*mesh), DegenerateType::Linear, false},
+      {planarWedge(mesh), aroundAxis, DegenerateType::Planar, false},
+      {planarWedge(mesh), aroundAxis, DegenerateType::Linear, true}};  // around the wedge
+  for (const Case& c : cases) {
+    const VectorisedEigenvector v = vectoriseEigenvector(c.field, c.region, c.type);
+    EXPECT_EQ(v.signConflicts > 0, c.conflicts);
+    const std::vector<Vec3> reference = primOrientation(c.field, v, c.type);
+    ASSERT_EQ(reference.size(), v.directions.size());
+    for (std::size_t i = 0; i < reference.size(); ++i)
+      ASSERT_EQ(reference[i], v.directions[i]) << "vertex " << v.vertices[i];
+  }
 }
 
 TEST(VectoriseEigenvector, RefusesDisconnectedOrInvalidRegions) {
