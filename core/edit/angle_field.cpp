@@ -202,8 +202,10 @@ JumpSolveResult JumpLaplacian::solve(const std::vector<double>& jumps, std::vect
   const System& s = *system_;
   const int n = static_cast<int>(region.vertices.size());
   if (width < 1 || width > 4) throw Error("angle field: 1 to 4 columns");
+  // Jumps for every column, or for the first only (the others have none).
+  const int jumpColumns = jumps.size() == region.edges.size() ? 1 : width;
   if (values.size() != static_cast<std::size_t>(n) * width ||
-      jumps.size() != region.edges.size() * width) {
+      jumps.size() != region.edges.size() * jumpColumns) {
     throw Error("angle field: values or jumps do not match the region");
   }
   JumpSolveResult result;
@@ -217,8 +219,8 @@ JumpSolveResult JumpLaplacian::solve(const std::vector<double>& jumps, std::vect
       for (int k = region.start[i]; k < region.start[i + 1]; ++k) {
         const int j = region.neighbour[k], edge = region.neighbourEdge[k];
         const double kij = s.weight[edge];
-        for (int c = 0; c < width; ++c)  // r_i = Σ_j K_ij g_ij (Eq. 6)
-          rhs[r * width + c] += kij * orientedJump(jumps[edge * width + c], i, j);
+        for (int c = 0; c < jumpColumns; ++c)  // r_i = Σ_j K_ij g_ij (Eq. 6)
+          rhs[r * width + c] += kij * orientedJump(jumps[edge * jumpColumns + c], i, j);
         if (s.row[j] < 0) {  // − Σ_{j held} K_ij θ_j
           for (int c = 0; c < width; ++c) rhs[r * width + c] -= kij * values[j * width + c];
         }
@@ -257,7 +259,7 @@ JumpSolveResult solveJumpLaplacian(const TetMesh& mesh, const RegionComplex& reg
   // The sizes first, before the set-up's own checks (as the one-step solve always did).
   if (width < 1 || width > 4) throw Error("angle field: 1 to 4 columns");
   if (held.size() != region.vertices.size() || values.size() != region.vertices.size() * width ||
-      jumps.size() != region.edges.size() * width) {
+      (jumps.size() != region.edges.size() * width && jumps.size() != region.edges.size())) {
     throw Error("angle field: held, values or jumps do not match the region");
   }
   return JumpLaplacian(mesh, region, held, progress).solve(jumps, values, width, options, progress);

@@ -63,8 +63,9 @@ class JumpLaplacian {
   /// Solves for `width` (1..4) columns at the free vertices (`held[i] == 0`, i local).
   /// `values` holds width numbers per local vertex (vertex-major): held entries are kept, free
   /// ones are the initial guess and receive the solution. `jumps` holds width numbers per local
-  /// edge (from its lower to its higher vertex). Throws core::Error when the sizes do not match
-  /// the region or the solver does not converge.
+  /// edge (from its lower to its higher vertex), or one: the first column's, the others having
+  /// none. Throws core::Error when the sizes do not match the region or the solver does not
+  /// converge.
   JumpSolveResult solve(const std::vector<double>& jumps, std::vector<double>& values, int width,
                         const JumpSolveOptions& options = {}, const Progress& progress = {}) const;
 

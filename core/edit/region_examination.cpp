@@ -10,20 +10,16 @@ RegionExamination examineRegion(const TensorField& field, const std::vector<int>
                                 DegenerateType type) {
   const TetMesh& mesh = field.mesh();
   RegionExamination x;
-  // Two mostly sequential walks of the region beside its (parallel) complex and vectorisation.
-  tbb::parallel_invoke(
-      [&] {
-        x.ball = checkTopologicalBall(mesh, tets);
-        x.vertices = regionVertices(mesh, tets);
-      },
-      [&] {
-        try {
-          x.complex.emplace(regionComplex(mesh, tets));
-          x.vec.emplace(vectoriseEigenvector(field, *x.complex, type));
-        } catch (const Error&) {
-          x.error = std::current_exception();
-        }
-      });
+  tbb::parallel_invoke([&] { x.ball = checkTopologicalBall(mesh, tets); },
+                       [&] {
+                         x.vertices = regionVertices(mesh, tets);
+                         try {
+                           x.complex.emplace(regionComplex(mesh, tets));
+                           x.vec.emplace(vectoriseEigenvector(field, *x.complex, type));
+                         } catch (const Error&) {
+                           x.error = std::current_exception();
+                         }
+                       });
   return x;
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 // What a try of a region edit (removal §6.4, reconnection §6.2) reads off its grown region: the
-// independent ball check and its vertices, and meanwhile its complex and vectorised non-repeating
+// independent ball check, and meanwhile its vertices, complex and vectorised non-repeating
 // eigenvector (both only read the region). The caller checks them in its own order: an error of
 // the vectorisation is kept for the point where that order would meet it (`vectorised()`).
 #include <exception>

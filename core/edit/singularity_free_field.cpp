@@ -200,17 +200,8 @@ TensorField singularityFreeField(const TensorField& field, const RegionComplex& 
       raw[i] = signedAngle(ref.reference[i], eig[i].vectors.col(1), directions[i]);
     }
   });
-  // The held angles lifted along the jumps (sequential; period π: the medium eigenvector is a
-  // line) while the jump columns are laid out.
-  std::vector<double> theta, jumps;
-  tbb::parallel_invoke([&] { theta = liftAngles(region, fixed, raw, ref.jumps, std::numbers::pi); },
-                       [&] {
-                         jumps.resize(region.edges.size() * width);
-                         forEach(static_cast<int>(region.edges.size()), [&](int e) {
-                           jumps[e * width] = ref.jumps[e];
-                           for (int c = 1; c < width; ++c) jumps[e * width + c] = 0;
-                         });
-                       });
+  // The held angles lifted along the jumps (period π: the medium eigenvector is a line).
+  const std::vector<double> theta = liftAngles(region, fixed, raw, ref.jumps, std::numbers::pi);
   std::vector<double> values(static_cast<std::size_t>(count) * width);
   forEach(count, [&](int i) {
     values[i * width] = theta[i];
@@ -218,7 +209,8 @@ TensorField singularityFreeField(const TensorField& field, const RegionComplex& 
     values[i * width + 2] = eig[i].values[2];
     if (hasTrace) values[i * width + 3] = trace[i];
   });
-  const JumpSolveResult solved = laplacian->solve(jumps, values, width, {}, progress);
+  const JumpSolveResult solved =
+      laplacian->solve(ref.jumps, values, width, {}, progress);  // θ has the jumps
   r.iterations = solved.iterations;
   r.relativeResidual = solved.relativeResidual;
 

@@ -69,12 +69,14 @@ class DistanceFront {
   void settleAll(const Progress& progress) { advance(kInf, progress); }
   ~DistanceFront() { stop(); }
 
-  /// Advances the front in a thread of its own, for settledAt().
-  void run(const Progress& progress) {
-    thread_ = std::thread([this, &progress] {
+  /// Advances the front in a thread of its own, for settledAt(), publishing its progress
+  /// after every `stride` mean edge lengths: short strides when the growth keeps up with the
+  /// front and waits for it, long ones when it lags behind (fewer writes to a line it reads).
+  void run(const Progress& progress, double stride) {
+    thread_ = std::thread([this, &progress, stride] {
       try {
         while (!stopping_.load(std::memory_order_relaxed) && !heap_.empty()) {
-          advance(std::max(popped_, heap_.top().first) + step_, progress);
+          advance(std::max(popped_, heap_.top().first) + stride * step_, progress);
           final_.store(popped_ - margin_, std::memory_order_release);
         }
       } catch (...) {
@@ -303,7 +305,7 @@ std::string shrink(TetSet& set, std::vector<std::pair<double, int>> keyed,
   });
   std::vector<int> order(keyed.size());
   for (std::size_t i = 0; i < keyed.size(); ++i) order[i] = keyed[i].second;
-  set.prepareRemovals(order);
+  if (order.size() * 8 >= set.mesh().tetCount()) set.countAllEdges();
   // Whether a tet may leave depends only on the tets around its vertices (and on the set's
   // size, which only shrinks, so a refusal stays one): a tet refused once is tested again only
   // after a tet sharing a vertex with it left. The removals are those of testing every tet in
@@ -377,8 +379,13 @@ BallRegion growBallRegion(const TetMesh& mesh, std::span<const int> seedSpan,
   Vec3 centre = Vec3::Zero();
   for (int s : seeds) centre += rows[s].centroid;
   centre /= double(seeds.size());
+  // The front runs ahead in a second thread, as in step 3 below, until the shrink's keys are
+  // read. It settles more tets than the growth takes (both sides of the targets), so the growth
+  // waits for it: it publishes often.
+  const bool threaded1 = frontThreadAllowed();
+  if (threaded1) d1.run(progress, 1.0 / 16);
   auto key1 = [&](int t) {
-    const double d = d1.at(t, progress);
+    const double d = threaded1 ? d1.settledAt(t) : d1.at(t, progress);
     return d < kInf ? d : bound1 + (rows[t].centroid - centre).norm();
   };
   std::size_t seedsIn = 0;
@@ -411,6 +418,7 @@ BallRegion growBallRegion(const TetMesh& mesh, std::span<const int> seedSpan,
   std::vector<std::pair<double, int>> keyed;
   for (int t : set.tets())
     if (!isSeed[t]) keyed.emplace_back(key1(t), t);
+  d1.stop();
   r.shrinkStop = shrink(set, std::move(keyed), progress);
   r.shrunkTets = set.size();
 
@@ -422,7 +430,7 @@ BallRegion growBallRegion(const TetMesh& mesh, std::span<const int> seedSpan,
     DistanceFront front(mesh, rows, core, options.distance, margin);
     const bool parallel = frontThreadAllowed();
     if (parallel) {
-      front.run(progress);
+      front.run(progress, 1.0);
     } else {
       front.settleAll(progress);
     }

@@ -1,9 +1,6 @@
 #include "core/region/tet_set.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
-#include <atomic>
+#include <algorithm>
 
 namespace tfd::core {
 namespace {
@@ -55,18 +52,10 @@ int TetSet::tetsAround(int edge) const {
   return n;
 }
 
-void TetSet::prepareRemovals(std::span<const int> tets) const {
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tets.size(), 4096),
-                    [&](const tbb::blocked_range<std::size_t>& r) {
-                      for (std::size_t k = r.begin(); k != r.end(); ++k)
-                        for (int e : mesh_.tetEdges()[tets[k]]) {
-                          // Several tets share an edge: they store the same count.
-                          std::atomic_ref<int> n(edgeTets_[e]);
-                          if (n.load(std::memory_order_relaxed) < 0)
-                            n.store(countTetsAround(mesh_, mesh_.edges()[e]),
-                                    std::memory_order_relaxed);
-                        }
-                    });
+void TetSet::countAllEdges() const {
+  std::fill(edgeTets_.begin(), edgeTets_.end(), 0);
+  for (const auto& edges : mesh_.tetEdges())
+    for (int e : edges) ++edgeTets_[e];
 }
 
 int TetSet::sharedFaces(int tet) const {

@@ -14,7 +14,6 @@
 // Memory: a few bytes per tet, edge and vertex of the mesh.
 #include <array>
 #include <cstddef>
-#include <span>
 #include <vector>
 
 #include "core/region/tet_rows.h"
@@ -40,9 +39,10 @@ class TetSet {
   bool canAdd(int tet) const;
   /// Whether removing `tet` (in the set) keeps a ball a ball; false for the last tet.
   bool canRemove(int tet) const;
-  /// Counts, in parallel, the tets around each edge of `tets` that canRemove() may ask for
-  /// (otherwise counted one by one on first use): for a shrink of many tets.
-  void prepareRemovals(std::span<const int> tets) const;
+  /// Counts the tets around every edge of the mesh in one pass over its tets, instead of edge
+  /// by edge when canRemove() first asks (a merge of two vertices' tets): for a shrink of a
+  /// large part of the mesh.
+  void countAllEdges() const;
   /// Adds / removes without testing (the caller tests first when it must keep a ball).
   void add(int tet);
   void remove(int tet);

@@ -1,7 +1,10 @@
 // Angle field of paper §6.3: Equation 5 (lifting held angles) and the jump-aware Laplacian of
 // Equation 6 (core/edit/angle_field.h).
 #include <gtest/gtest.h>
+
 #include <tbb/global_control.h>
+#include <bit>
+#include <cstdint>
 
 #include <cmath>
 #include <numbers>
@@ -187,6 +190,19 @@ TEST(AngleField, OneSystemSolvesEachRightHandSideLikeAFreshSolve) {
     EXPECT_GT(a.iterations, 0);
     EXPECT_EQ(a.freeVertices, ball.count(false));
   }
+  // Jumps of the first column alone: as if the other columns had zero jumps, bit for bit.
+  std::vector<double> firstOnly(ball.region.edges.size()), padded(firstOnly.size() * 3, 0.0);
+  for (std::size_t e = 0; e < firstOnly.size(); ++e)
+    padded[3 * e] = firstOnly[e] = 0.05 * std::sin(0.9 * e);
+  std::vector<double> threeColumns(std::size_t(n) * 3);
+  for (std::size_t i = 0; i < threeColumns.size(); ++i) threeColumns[i] = std::cos(0.2 * i);
+  std::vector<double> withPadding = threeColumns;
+  system.solve(firstOnly, threeColumns, 3);
+  system.solve(padded, withPadding, 3);
+  for (std::size_t i = 0; i < withPadding.size(); ++i)
+    ASSERT_EQ(std::bit_cast<std::uint64_t>(threeColumns[i]),
+              std::bit_cast<std::uint64_t>(withPadding[i]))
+        << "entry " << i;
   std::vector<double> values(n), tooFewJumps(ball.region.edges.size() - 1);
   EXPECT_THROW(system.solve(tooFewJumps, values, 1), Error);
   EXPECT_THROW(system.solve(std::vector<double>(ball.region.edges.size()), values, 5), Error);
