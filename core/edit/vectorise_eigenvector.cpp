@@ -25,8 +25,8 @@ double isolation(const EigenDecomposition& d, DegenerateType type, double norm) 
 }
 
 /// The region's vertices oriented along a maximum spanning tree of |e_u·e_v| from `seed`;
-/// returns how many it reached (all of them unless the region is not connected).
-int orientAlongTree(const RegionComplex& region, int seed, std::vector<Vec3>& dirs) {
+/// the region must be connected.
+void orientAlongTree(const RegionComplex& region, int seed, std::vector<Vec3>& dirs) {
   const int n = static_cast<int>(region.vertices.size());
   std::vector<char> done(n, 0);
   // (weight, −vertex, parent): the largest weight first, then the smallest vertex id (the
@@ -44,18 +44,15 @@ int orientAlongTree(const RegionComplex& region, int seed, std::vector<Vec3>& di
   };
   done[seed] = 1;
   push(seed);
-  int reached = 1;
   while (!queue.empty()) {
     const auto [weight, negTo, from] = queue.top();
     queue.pop();
     const int to = -negTo;
     if (done[to]) continue;
     done[to] = 1;
-    ++reached;
     if (dirs[from].dot(dirs[to]) < 0) dirs[to] = -dirs[to];
     push(to);
   }
-  return reached;
 }
 
 /// The orientation in which every region edge joins directions with a positive dot product,
@@ -146,7 +143,7 @@ VectorisedEigenvector vectoriseEigenvector(const TensorField& field, const Regio
     out.directions = std::move(dirs);
     return out;
   }
-  orientAlongTree(region, seed, dirs);  // connected: consistentFlips() checked
+  orientAlongTree(region, seed, dirs);  // connected: consistentFlips() checked it
   const int edgeCount = static_cast<int>(region.edges.size());
   std::vector<char> conflict(edgeCount, 0);
   tbb::parallel_for(tbb::blocked_range<int>(0, edgeCount, 4096),
