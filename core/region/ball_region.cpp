@@ -303,7 +303,7 @@ std::string shrink(TetSet& set, std::vector<std::pair<double, int>> keyed,
   tbb::parallel_sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) {
     return a.first != b.first ? a.first > b.first : a.second < b.second;
   });
-  std::vector<int> order(keyed.size());
+  std::vector<int> order(keyed.size());  // the ids alone: every sweep reads them
   for (std::size_t i = 0; i < keyed.size(); ++i) order[i] = keyed[i].second;
   if (order.size() * 8 >= set.mesh().tetCount()) set.countAllEdges();
   // Whether a tet may leave depends only on the tets around its vertices (and on the set's

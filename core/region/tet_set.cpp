@@ -10,6 +10,16 @@ constexpr int kEdgeEnds[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}}
 /// Position in that order of the edge joining local vertices i and j.
 constexpr int kEdgeOf[4][4] = {{-1, 0, 1, 2}, {0, -1, 3, 4}, {1, 3, -1, 5}, {2, 4, 5, -1}};
 
+/// Tets around the edge (a, b): those around a that also hold b.
+int countTetsAround(const TetMesh& mesh, const TetMesh::Edge& ends) {
+  int n = 0;
+  for (int t : mesh.vertexTets(ends[0])) {
+    const auto& v = mesh.tets()[t];
+    n += (v[0] == ends[1]) | (v[1] == ends[1]) | (v[2] == ends[1]) | (v[3] == ends[1]);
+  }
+  return n;
+}
+
 }  // namespace
 
 TetSet::TetSet(const TetMesh& mesh)
@@ -29,20 +39,6 @@ TetSet::TetSet(const TetMesh& mesh)
     }
   }
 }
-
-namespace {
-
-/// Tets around the edge (a, b): those around a that also hold b.
-int countTetsAround(const TetMesh& mesh, const TetMesh::Edge& ends) {
-  int n = 0;
-  for (int t : mesh.vertexTets(ends[0])) {
-    const auto& v = mesh.tets()[t];
-    n += (v[0] == ends[1]) | (v[1] == ends[1]) | (v[2] == ends[1]) | (v[3] == ends[1]);
-  }
-  return n;
-}
-
-}  // namespace
 
 // Counted on first use, so a set costs in proportion to the tets it touches rather than to
 // the mesh.

@@ -40,8 +40,8 @@ class TetSet {
   /// Whether removing `tet` (in the set) keeps a ball a ball; false for the last tet.
   bool canRemove(int tet) const;
   /// Counts the tets around every edge of the mesh in one pass over its tets, instead of edge
-  /// by edge when canRemove() first asks (a merge of two vertices' tets): for a shrink of a
-  /// large part of the mesh.
+  /// by edge when canRemove() first asks (a scan of the tets around one end): for a shrink of
+  /// a large part of the mesh.
   void countAllEdges() const;
   /// Adds / removes without testing (the caller tests first when it must keep a ball).
   void add(int tet);
