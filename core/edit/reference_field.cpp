@@ -21,10 +21,10 @@ namespace {
 /// tet corners i and j.
 constexpr int kEdgeOf[4][4] = {{-1, 0, 1, 2}, {0, -1, 3, 4}, {1, 3, -1, 5}, {2, 4, 5, -1}};
 
+/// A region tet's local corners and edges (tetEdges order), looked up when the tet joins.
 struct RegionTet {
-  std::array<int, 4> v;   ///< local vertices
-  std::array<int, 6> e;   ///< local edges, tetEdges order
-  std::array<int, 4> nb;  ///< local tet across the face opposite corner i, −1 outside
+  std::array<int, 4> v;
+  std::array<int, 6> e;
 };
 
 class Propagation {
@@ -32,22 +32,20 @@ class Propagation {
   Propagation(const TetMesh& mesh, const RegionComplex& region, const std::vector<Vec3>& n)
       : mesh_(mesh), region_(region), n_(n) {
     const int tets = static_cast<int>(region.tets.size());
-    tets_.reset(new RegionTet[tets]);  // not zeroed: every entry is filled below, in parallel
+    // The local face neighbours of every tet, which each candidate test reads (16 bytes a tet;
+    // corners and edges are looked up once, when a tet joins). Each entry depends only on its
+    // tet: filled in parallel (the same for any thread count), not zeroed first.
+    nb_.reset(new std::array<int, 4>[tets]);
     tetCount_ = tets;
-    // Each entry depends only on its tet: filled in parallel (the same for any thread count).
     tbb::parallel_for(tbb::blocked_range<int>(0, tets, 1024),
                       [&](const tbb::blocked_range<int>& b) {
                         for (int lt = b.begin(); lt != b.end(); ++lt) {
                           const int t = region.tets[lt];
-                          RegionTet& r = tets_[lt];
                           for (int i = 0; i < 4; ++i) {
-                            r.v[i] = region.localVertex(mesh.tets()[t][i]);
                             const auto& ft = mesh.faceTets()[mesh.tetFaces()[t][i]];
                             const int other = ft[0] == t ? ft[1] : ft[0];
-                            r.nb[i] = other < 0 ? -1 : region.localTet(other);
+                            nb_[lt][i] = other < 0 ? -1 : region.localTet(other);
                           }
-                          for (int k = 0; k < 6; ++k)
-                            r.e[k] = region.localEdge(mesh.tetEdges()[t][k]);
                         }
                       });
     visited_.assign(tets, 0);
@@ -128,13 +126,25 @@ class Propagation {
 
   /// Whether adding t keeps the visited set a ball: its contact with the set is a disk.
   bool simple(int t) const {
-    const RegionTet& r = tets_[t];
+    const std::array<int, 4>& nb = nb_[t];
     int faces[4], s = 0;
     for (int i = 0; i < 4; ++i)
-      if (r.nb[i] >= 0 && visited_[r.nb[i]]) faces[s++] = i;
-    if (s == 1) return !hasU_[r.v[faces[0]]];  // the opposite corner must be new
-    if (s == 2) return !known_[r.e[kEdgeOf[faces[0]][faces[1]]]];  // and the edge between them
+      if (nb[i] >= 0 && visited_[nb[i]]) faces[s++] = i;
+    const int meshTet = region_.tets[t];
+    if (s == 1)  // the opposite corner must be new
+      return !hasU_[region_.localVertex(mesh_.tets()[meshTet][faces[0]])];
+    if (s == 2)  // and the edge between them
+      return !known_[region_.localEdge(mesh_.tetEdges()[meshTet][kEdgeOf[faces[0]][faces[1]]])];
     return s == 3;
+  }
+
+  /// Local tet t's corners and edges, from the mesh and the region's lookup tables.
+  RegionTet corners(int t) const {
+    const int meshTet = region_.tets[t];
+    RegionTet r;
+    for (int i = 0; i < 4; ++i) r.v[i] = region_.localVertex(mesh_.tets()[meshTet][i]);
+    for (int k = 0; k < 6; ++k) r.e[k] = region_.localEdge(mesh_.tetEdges()[meshTet][k]);
+    return r;
   }
 
   /// Worst defect over the four triangles of every tet. A jump is final once set, so this is
@@ -145,7 +155,7 @@ class Propagation {
         tbb::blocked_range<int>(0, static_cast<int>(tetCount_), 1024), 0.0,
         [&](const tbb::blocked_range<int>& b, double worst) {
           for (int t = b.begin(); t != b.end(); ++t) {
-            const RegionTet& r = tets_[t];
+            const RegionTet r = corners(t);
             for (int skip = 0; skip < 4; ++skip) {  // the four triangles
               int c[3], k = 0;
               for (int i = 0; i < 4; ++i)
@@ -182,7 +192,7 @@ class Propagation {
 
   void add(int t) {
     visited_[t] = 1;
-    RegionTet& r = tets_[t];
+    const RegionTet r = corners(t);
     // A new corner takes U transported from the best-aligned corner that has one (jump 0).
     for (int i = 0; i < 4; ++i) {
       if (hasU_[r.v[i]]) continue;
@@ -227,7 +237,7 @@ class Propagation {
         progress = true;
       }
     }
-    for (int nb : r.nb) {
+    for (int nb : nb_[t]) {
       if (nb < 0) continue;
       ++shared_[nb];  // face adjacency is symmetric: t is one of nb's neighbours
       if (!visited_[nb]) queue_[std::min(shared(nb), 3) - 1].push_back(nb);
@@ -237,7 +247,7 @@ class Propagation {
   const TetMesh& mesh_;
   const RegionComplex& region_;
   const std::vector<Vec3>& n_;
-  std::unique_ptr<RegionTet[]> tets_;
+  std::unique_ptr<std::array<int, 4>[]> nb_;
   std::size_t tetCount_ = 0;
   std::vector<char> visited_, hasU_, known_;
   /// Per tet, its faces shared with visited tets (kept as tets join, instead of reading the

@@ -232,7 +232,7 @@ RemoveCurvesResult removeCurves(const TensorField& field, const RemoveCurvesOpti
     attempt.regionTets = region.tets.size();
     const RegionExamination x = examineRegion(field, region.tets, type);
     const RegionVertices& rv = x.vertices;
-    TensorField edited = field;
+    std::optional<TensorField> edited;
     if (!x.ball.ball) {
       attempt.failedCheck = "region is a ball", attempt.detail = x.ball.problem;
     } else if (rv.free.size() == rv.vertices.size()) {
@@ -290,9 +290,9 @@ RemoveCurvesResult removeCurves(const TensorField& field, const RemoveCurvesOpti
       }
     }
     if (!attempt.failedCheck.empty()) return TryOutcome::Failed;
-    DegenerateCurves after = extractDegenerateCurves(edited, o.extract, progress);
+    DegenerateCurves after = extractDegenerateCurves(*edited, o.extract, progress);
     const EditVerification v =
-        verifyEdit(field, edited, rv.free, region.tets, all, after, targets.ids);
+        verifyEdit(field, *edited, rv.free, region.tets, all, after, targets.ids);
     attempt.failedCheck = v.failedCheck, attempt.detail = v.detail;
     if (!v.passed) return TryOutcome::Failed;
     report.regionTets = region.tets.size();
@@ -304,7 +304,7 @@ RemoveCurvesResult removeCurves(const TensorField& field, const RemoveCurvesOpti
     report.growStop = region.growStop, report.shrinkStop = region.shrinkStop;
     report.growOutStop = region.growOutStop;
     report.curvesAfter = after.size();
-    result = RemoveCurvesResult{std::move(edited), std::move(after), region.tets, {}};
+    result = RemoveCurvesResult{std::move(*edited), std::move(after), region.tets, {}};
     return TryOutcome::Verified;
   };
   if (!runEditTries(plan, report.tries, progress, attemptTry))

@@ -44,15 +44,23 @@ double bucketWidth(const TetMesh& mesh) { return std::max(0.02 * mesh.meanEdgeLe
 /// of the sequential run; the growth only waits for them.
 class DistanceFront {
  public:
-  /// `margin`: frontMargin(mesh).
+  /// A tet's distance and the source it is measured to, side by side: a pop and a
+  /// relaxation read both (one cache miss on a random tet id instead of two).
+  struct Label {
+    double d = kInf;
+    int source = -1;
+  };
+  /// `margin`: frontMargin(mesh). `recycled`: the labels of a finished front of the same mesh
+  /// (takeLabels()), reset and reused instead of fresh memory.
   DistanceFront(const TetMesh& mesh, const TetRows& rows, std::span<const int> sources,
-                double bound, double margin)
+                double bound, double margin, std::vector<Label> recycled = {})
       : rows_(rows),
         bound_(bound),
         margin_(margin),
         step_(std::max(mesh.meanEdgeLength(), 1e-300)),
-        label_(mesh.tetCount()),
+        label_(std::move(recycled)),
         heap_(bucketWidth(mesh)) {
+    label_.assign(mesh.tetCount(), Label{});
     for (int s : sources) {
       if (label_[s].d == 0) continue;
       label_[s] = {0.0, s};
@@ -106,6 +114,11 @@ class DistanceFront {
     stopping_.store(true, std::memory_order_relaxed);
     if (thread_.joinable()) thread_.join();
   }
+  /// The labels, for a later front (stops the thread of run() first).
+  std::vector<Label> takeLabels() && {
+    stop();
+    return std::move(label_);
+  }
   /// The distance of every tet (settleAll() first).
   std::vector<double> release() const {
     std::vector<double> d(label_.size());
@@ -145,12 +158,6 @@ class DistanceFront {
   }
 
   const TetRows& rows_;
-  /// A tet's distance and the source it is measured to, side by side: a pop and a
-  /// relaxation read both (one cache miss on a random tet id instead of two).
-  struct Label {
-    double d = kInf;
-    int source = -1;
-  };
   double bound_, margin_, step_, popped_ = -kInf;
   std::vector<Label> label_;
   BucketQueue heap_;
@@ -295,10 +302,10 @@ std::string lengthText(double d) {
   return buf;
 }
 
-/// Step 2: removes non-seed tets, farthest first, while the set stays a ball.
-/// `keyed`: (key, tet) of the set's non-seed tets.
-std::string shrink(TetSet& set, std::vector<std::pair<double, int>> keyed,
-                   const Progress& progress) {
+}  // namespace
+
+std::string shrinkBall(TetSet& set, std::vector<std::pair<double, int>> keyed,
+                       const Progress& progress) {
   // Farthest first, ties by id (a total order: the parallel sort's result is unique).
   tbb::parallel_sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) {
     return a.first != b.first ? a.first > b.first : a.second < b.second;
@@ -321,20 +328,24 @@ std::string shrink(TetSet& set, std::vector<std::pair<double, int>> keyed,
     for (int v : mesh.tets()[t]) sum += leftAround[v];
     return sum;
   };
+  // A tet that left never returns: each sweep keeps only the tets still in the set, in order
+  // (late sweeps remove a few dozen tets each and would otherwise rescan every id).
   std::size_t removed = 0;
   for (int sweep = 0; sweep < 64; ++sweep) {
-    std::size_t now = 0;
-    for (int t : order) {
-      if (!set.contains(t)) continue;
+    std::size_t now = 0, kept = 0;
+    for (const int t : order) {
       const std::uint32_t sum = cornerSum(t);
-      if (refusedAt[t] == sum) continue;  // refused, nothing changed around it
-      if (!set.canRemove(t)) {
+      if (refusedAt[t] != sum) {  // else refused, and nothing changed around it since
+        if (set.canRemove(t)) {
+          set.remove(t), ++now;
+          for (int v : mesh.tets()[t]) ++leftAround[v];
+          continue;
+        }
         refusedAt[t] = sum;
-        continue;
       }
-      set.remove(t), ++now;
-      for (int v : mesh.tets()[t]) ++leftAround[v];
+      order[kept++] = t;
     }
+    order.resize(kept);
     progress.throwIfCancelled();
     removed += now;
     if (now == 0)
@@ -343,8 +354,6 @@ std::string shrink(TetSet& set, std::vector<std::pair<double, int>> keyed,
   }
   return "removed " + std::to_string(removed) + " tets (stopped after 64 sweeps)";
 }
-
-}  // namespace
 
 std::vector<double> tetDistances(const TetMesh& mesh, std::span<const int> sources, double bound,
                                  const Progress& progress) {
@@ -419,7 +428,7 @@ BallRegion growBallRegion(const TetMesh& mesh, std::span<const int> seedSpan,
   for (int t : set.tets())
     if (!isSeed[t]) keyed.emplace_back(key1(t), t);
   d1.stop();
-  r.shrinkStop = shrink(set, std::move(keyed), progress);
+  r.shrinkStop = shrinkBall(set, std::move(keyed), progress);
   r.shrunkTets = set.size();
 
   // Step 3.
@@ -427,7 +436,7 @@ BallRegion growBallRegion(const TetMesh& mesh, std::span<const int> seedSpan,
     const std::vector<int> core = set.tets();
     // The front runs ahead in a second thread while the growth waits for final distances
     // (both read the rows, which TetRows fills before either starts).
-    DistanceFront front(mesh, rows, core, options.distance, margin);
+    DistanceFront front(mesh, rows, core, options.distance, margin, std::move(d1).takeLabels());
     const bool parallel = frontThreadAllowed();
     if (parallel) {
       front.run(progress, 1.0);

@@ -13,12 +13,15 @@
 // (ties broken by tet id).
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/progress.h"
 #include "core/tet_mesh.h"
 
 namespace tfd::core {
+
+class TetSet;
 
 struct BallRegionOptions {
   double distance = 0;  ///< grow-out distance from the shrunk ball (a length); 0: none
@@ -43,6 +46,12 @@ struct BallRegion {
 BallRegion growBallRegion(const TetMesh& mesh, std::span<const int> seeds,
                           const std::vector<unsigned char>& forbidden,
                           const BallRegionOptions& options, const Progress& progress = {});
+
+/// Step 2 on its own: removes tets of `set` listed in `keyed` as (key, tet), farthest first
+/// (ties by ascending id), sweep after sweep (at most 64) while the set stays a ball, exactly as
+/// testing every listed tet still in the set in every sweep would; returns why it stopped.
+std::string shrinkBall(TetSet& set, std::vector<std::pair<double, int>> keyed,
+                       const Progress& progress = {});
 
 /// Centroid distance from every tet within `bound` to the nearest source tet's centroid,
 /// propagated through faces (infinity beyond `bound`). One entry per mesh tet.

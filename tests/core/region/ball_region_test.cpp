@@ -220,6 +220,56 @@ namespace {
 /// Each forbidden tet met is counted once: the count in growOutStop is at most the number of
 /// distinct forbidden tets next to the region (a forbidden tet re-queued whenever a tet around
 /// one of its vertices joined used to be counted again each time).
+// The shrink tests a refused tet again only after a tet beside it left, and drops the tets
+// that left from its list: the removals must be those of the plain rule, every listed tet
+// still in the set tested in every sweep, farthest first.
+TEST(BallRegion, ShrinkRemovesWhatTestingEveryTetInEverySweepRemoves) {
+  const auto mesh = testing::jitteredBox(7, 0.15);
+  const TetMesh& m = *mesh;
+  std::mt19937 rng(11);
+  int removedInAll = 0;
+  for (int run = 0; run < 12; ++run) {
+    // A ball: tets added in a random breadth-first order while the simple-tet test allows.
+    std::vector<int> added;
+    {
+      TetSet grow(m);
+      std::vector<int> front{int(rng() % m.tetCount())};
+      std::vector<char> seen(m.tetCount(), 0);
+      seen[front[0]] = 1;
+      const std::size_t target = m.tetCount() / 3 + rng() % (m.tetCount() / 2);
+      while (!front.empty() && grow.size() < target) {
+        const std::size_t pick = rng() % front.size();
+        const int t = front[pick];
+        front.erase(front.begin() + pick);
+        if (!grow.canAdd(t)) continue;
+        grow.add(t), added.push_back(t);
+        for (int n : grow.neighbours(t))
+          if (n >= 0 && !seen[n]) seen[n] = 1, front.push_back(n);
+      }
+    }
+    // Keys with many ties (broken by id), a few tets kept as seeds (not listed).
+    std::vector<std::pair<double, int>> keyed;
+    for (int t : added)
+      if (rng() % 10 != 0) keyed.emplace_back(double(rng() % 7), t);
+    TetSet fast(m), plain(m);
+    for (int t : added) fast.add(t), plain.add(t);
+    shrinkBall(fast, keyed);
+    std::sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) {
+      return a.first != b.first ? a.first > b.first : a.second < b.second;
+    });
+    for (int sweep = 0; sweep < 64; ++sweep) {
+      bool any = false;
+      for (const auto& [key, t] : keyed)
+        if (plain.contains(t) && plain.canRemove(t)) plain.remove(t), any = true;
+      if (!any) break;
+    }
+    ASSERT_EQ(fast.tets(), plain.tets()) << "run " << run;
+    removedInAll += int(added.size() - plain.size());
+    EXPECT_TRUE(checkTopologicalBall(m, plain.tets()).ball) << "run " << run;
+  }
+  EXPECT_GT(removedInAll, 1000);
+}
+
 TEST(BallRegion, ForbiddenTetsLeftOutAreCountedOnce) {
   const auto mesh = testing::jitteredBox(12, 0.15);
   const auto seeds = tetsWhere(*mesh, [](const Vec3& c) { return c.norm() < 0.15; });
