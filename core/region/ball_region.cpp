@@ -24,10 +24,10 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-/// Bucket width of the fronts' queues: a fiftieth of the mean edge length. The pop order does
-/// not depend on it; narrow buckets keep each bucket's heap small (measured on the 1M-tet
-/// edits: faster than a quarter of the edge length).
-double bucketWidth(const TetMesh& mesh) { return std::max(0.02 * mesh.meanEdgeLength(), 1e-300); }
+/// Bucket width of the fronts' queues: a two-hundredth of the mean edge length. The pop order
+/// does not depend on it; narrow buckets keep each bucket's heap small (measured on the 1M-tet
+/// torus: the distance front 6 % faster than with a fiftieth, which beat a quarter).
+double bucketWidth(const TetMesh& mesh) { return std::max(0.005 * mesh.meanEdgeLength(), 1e-300); }
 
 /// The centroid distance of tetDistances(), computed on demand: the front is a label-correcting
 /// Dijkstra over face-adjacent tets (a tet takes the distance to its neighbour's source when
@@ -132,10 +132,20 @@ class DistanceFront {
     while (!heap_.empty() && heap_.top().first <= upTo) {
       const auto [dt, t] = heap_.top();
       heap_.pop();
-      if (!heap_.empty()) {  // the next pop's tet, loaded while this one is relaxed
+      if (!heap_.empty()) {
+        // Loads ahead, two pops deep: the neighbours of the next pop's tet (its row was asked
+        // for one pop earlier, as the one after next) and the row of the pop after it. The
+        // relaxations below then find their rows and labels in cache.
         const int next = heap_.top().second;
-        __builtin_prefetch(&label_[next]);
-        rows_.prefetch(next);
+        for (int m : rows_[next].neighbours) {
+          if (m < 0) continue;
+          __builtin_prefetch(&label_[m]);
+          rows_.prefetch(m);
+        }
+        if (const auto* after = heap_.second()) {
+          __builtin_prefetch(&label_[after->second]);
+          rows_.prefetch(after->second);
+        }
       }
       const Label here = label_[t];
       if (dt > here.d) continue;

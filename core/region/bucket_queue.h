@@ -53,6 +53,13 @@ class OrderedBucketQueue {
     std::pop_heap(heap_.begin(), heap_.end(), HeapLess());
     heap_.pop_back();
   }
+  /// The entry that pops after top() when it is already in the heap (else null): a hint for
+  /// loading ahead, valid until the next change of the queue. Call after top().
+  const Entry* second() const {
+    if (heap_.size() < 2) return nullptr;
+    if (heap_.size() == 2 || HeapLess()(heap_[2], heap_[1])) return &heap_[1];
+    return &heap_[2];
+  }
 
  private:
   void refill() {
@@ -83,6 +90,7 @@ class BucketQueue {
   void emplace(double key, int id) { queue_.emplace(bucketOf(key), Entry(key, id)); }
   const Entry& top() { return queue_.top(); }
   void pop() { queue_.pop(); }
+  const Entry* second() const { return queue_.second(); }
 
  private:
   using Queue = OrderedBucketQueue<Entry, std::greater<>>;

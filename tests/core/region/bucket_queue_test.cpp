@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <queue>
 #include <random>
 #include <tuple>
@@ -34,7 +35,7 @@ TEST(BucketQueue, PopsInThePriorityQueueOrder) {
         reference;
     BucketQueue queue(width);
     double front = 0;  // keys mostly grow like a front's, some fall behind it
-    int pops = 0;
+    int pops = 0, seconds = 0;
     for (int step = 0; step < 20000; ++step) {
       if (reference.empty() || u(rng) < 0.55) {
         const double ahead = 0.2 * u(rng);  // one draw per statement: the same keys everywhere
@@ -49,14 +50,22 @@ TEST(BucketQueue, PopsInThePriorityQueueOrder) {
         ASSERT_FALSE(queue.empty());
         ASSERT_EQ(queue.top(), reference.top()) << "width " << width << " pop " << pops;
         front = std::max(front, reference.top().first);
+        std::optional<std::pair<double, int>> second;  // when known, the one after top()
+        if (const auto* s = queue.second()) second = *s;
         queue.pop();
         reference.pop();
+        if (second) {
+          ASSERT_FALSE(reference.empty());
+          ASSERT_EQ(*second, reference.top()) << "width " << width << " pop " << pops;
+          ++seconds;
+        }
         ++pops;
       }
       ASSERT_EQ(queue.empty(), reference.empty());
     }
     expectDrainsInOrder(queue, reference);
     EXPECT_GT(pops, 5000);
+    EXPECT_GT(seconds, width < 1 ? 1000 : 4000);
   }
   // Keys far beyond the last bucket share it and still come out in order.
   BucketQueue far(1e-6);
