@@ -94,12 +94,9 @@ LocalSmoothResult smoothVertices(const TensorField& field, const std::vector<int
   // Set-up proportional to the region: only the free rows of the stiffness matrix.
   const HarmonicSolver harmonic = HarmonicSolver::forRegion(field.meshPtr(), freeVertices, solver);
   progress.throwIfCancelled();
-  const SolveResult solved = harmonic.solve(field.values(), progress);
-  report.iterations = solved.iterations;
-  report.relativeResidual = solved.relativeResidual;
-
-  // The trace (dropped by the traceless solve) is smoothed as one more harmonic scalar when the
-  // field has one (beyond rounding) at a free vertex or at a neighbour of one.
+  // The trace (dropped by the traceless solve) is smoothed as one more harmonic scalar, in the
+  // same solve, when the field has one (beyond rounding) at a free vertex or at a neighbour of
+  // one.
   double maxTrace = 0, maxNorm = 0;
   for (int v : freeVertices) {
     for (int t : mesh.vertexTets(v)) {
@@ -110,26 +107,13 @@ LocalSmoothResult smoothVertices(const TensorField& field, const std::vector<int
     }
   }
   const bool hasTrace = maxTrace > 1e-12 * maxNorm;
-  std::vector<double> trace;
-  if (hasTrace) {
-    trace.resize(n);
-    for (std::size_t v = 0; v < n; ++v) trace[v] = field.at(static_cast<int>(v)).trace();
-    double residual = 0;
-    const int iterations = harmonic.solveColumns(trace, 1, progress, &residual);
-    report.iterations = std::max(report.iterations, iterations);
-    report.relativeResidual = std::max(report.relativeResidual, residual);
-  }
+  const SolveResult solved = hasTrace ? harmonic.solveWithTrace(field.values(), progress)
+                                      : harmonic.solve(field.values(), progress);
+  report.iterations = solved.iterations;
+  report.relativeResidual = solved.relativeResidual;
 
   std::vector<Tensor> values = field.values();  // everything outside the free set: bitwise kept
-  for (int v : freeVertices) {
-    values[v] = solved.values[v];
-    if (hasTrace) {
-      const double third = trace[v] / 3;
-      values[v].xx += third;
-      values[v].yy += third;
-      values[v].zz += third;
-    }
-  }
+  for (int v : freeVertices) values[v] = solved.values[v];
   return {TensorField(field.meshPtr(), std::move(values)), report};
 }
 

@@ -69,20 +69,9 @@ TensorField reconnectField(const TensorField& field, const std::vector<int>& she
   bool hasTrace = false;
   for (int v : rv.vertices) hasTrace = hasTrace || values[v].trace() != 0;
   const HarmonicSolver solver = HarmonicSolver::forRegion(field.meshPtr(), free);
-  std::vector<double> trace;
-  if (hasTrace) {
-    trace.resize(mesh.vertexCount());
-    for (std::size_t v = 0; v < trace.size(); ++v) trace[v] = values[v].trace();
-  }
-  SolveResult solved = solver.solve(std::move(values), progress);
+  SolveResult solved = hasTrace ? solver.solveWithTrace(std::move(values), progress)
+                                : solver.solve(std::move(values), progress);
   report.iterations = solved.iterations, report.relativeResidual = solved.relativeResidual;
-  if (hasTrace) {
-    report.iterations += solver.solveColumns(trace, 1, progress);
-    for (int v : free) {
-      const double third = trace[v] / 3;
-      solved.values[v].xx += third, solved.values[v].yy += third, solved.values[v].zz += third;
-    }
-  }
   return TensorField(field.meshPtr(), std::move(solved.values));
 }
 

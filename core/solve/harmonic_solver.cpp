@@ -490,6 +490,28 @@ SolveResult HarmonicSolver::solve(std::vector<Tensor> values, const Progress& pr
   return result;
 }
 
+SolveResult HarmonicSolver::solveWithTrace(std::vector<Tensor> values,
+                                           const Progress& progress) const {
+  if (values.size() != impl_->mesh->vertexCount())
+    throw Error("harmonic solve: expected " + std::to_string(impl_->mesh->vertexCount()) +
+                " tensors, got " + std::to_string(values.size()));
+  SolveResult result;
+  auto get = [&](int v, double* out) {
+    const auto c = values[v].vec5();
+    for (int k = 0; k < 5; ++k) out[k] = c[k];
+    out[5] = values[v].trace();
+  };
+  auto set = [&](int v, const double* in) {
+    Tensor t = Tensor::fromVec5({in[0], in[1], in[2], in[3], in[4]});
+    const double third = in[5] / 3;
+    t.xx += third, t.yy += third, t.zz += third;
+    values[v] = t;
+  };
+  result.iterations = impl_->solveBlock<6>(get, set, progress, &result.relativeResidual);
+  result.values = std::move(values);
+  return result;
+}
+
 int HarmonicSolver::solveColumns(std::span<double> values, int width, const Progress& progress,
                                  double* relativeResidual) const {
   if (width < 1 || width > 6)

@@ -75,6 +75,12 @@ class HarmonicSolver {
   /// components are solved together; the free vertices receive traceless tensors (the trace
   /// part of the input is dropped).
   SolveResult solve(std::vector<Tensor> values, const Progress& progress = {}) const;
+  /// solve() with the trace kept: solved as a sixth harmonic column in the same batched CG and
+  /// added back (a third on each diagonal entry) at the free vertices. Each column runs its own
+  /// recurrence, so the tensors are bit for bit those of solve() plus solveColumns() on the
+  /// traces; one pass over the matrix per iteration instead of two solves. The iteration count
+  /// is that of the slowest column.
+  SolveResult solveWithTrace(std::vector<Tensor> values, const Progress& progress = {}) const;
 
   /// Generic form for `width` (1..6) scalar fields at once: `values` holds width numbers per
   /// vertex (vertex-major: values[v * width + c]); fixed entries are kept, free ones solved.

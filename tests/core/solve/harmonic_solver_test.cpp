@@ -152,6 +152,37 @@ TEST(HarmonicSolver, RegionSolveKeepsOutsideBitwiseAndIsHarmonicInside) {
   }
 }
 
+// The trace as a sixth column of the same batched CG: each column runs its own recurrence, so
+// the tensors are exactly those of the traceless solve plus a separate solve of the traces.
+TEST(HarmonicSolver, TraceSolvedBesideTheDeviatorEqualsTwoSolvesBitwise) {
+  const auto mesh = jitteredBox(12);
+  std::vector<Tensor> values(mesh->vertexCount());
+  std::vector<int> region;
+  for (std::size_t v = 0; v < values.size(); ++v) {
+    const Vec3& p = mesh->positions()[v];
+    values[v] = Tensor{std::sin(3 * p.x()) + 2, std::cos(2 * p.y()) * p.z(), 0.5 * p.z(),
+                       p.x() * p.y(),           std::sin(p.z() + p.x()),     0.3};
+    if ((p - Vec3(0.2, -0.1, 0.1)).norm() < 0.45) region.push_back(static_cast<int>(v));
+  }
+  ASSERT_GT(region.size(), 50u);
+  const HarmonicSolver solver = HarmonicSolver::forRegion(mesh, region);
+  const SolveResult both = solver.solveWithTrace(values);
+  SolveResult apart = solver.solve(values);
+  std::vector<double> trace(values.size());
+  for (std::size_t v = 0; v < values.size(); ++v) trace[v] = values[v].trace();
+  double traceResidual = 0;
+  const int traceIterations = solver.solveColumns(trace, 1, {}, &traceResidual);
+  for (int v : region) {
+    const double third = trace[v] / 3;
+    apart.values[v].xx += third, apart.values[v].yy += third, apart.values[v].zz += third;
+  }
+  EXPECT_EQ(both.iterations, std::max(apart.iterations, traceIterations));
+  EXPECT_EQ(both.relativeResidual, std::max(apart.relativeResidual, traceResidual));
+  for (std::size_t v = 0; v < values.size(); ++v)
+    ASSERT_EQ(both.values[v], apart.values[v]) << "vertex " << v;
+  EXPECT_NE(both.values[region[0]].trace(), 0.0);
+}
+
 TEST(HarmonicSolver, WarmStartFromTheSolutionNeedsNoIterations) {
   const auto mesh = jitteredBox(10);
   std::vector<unsigned char> fixed(mesh->vertexCount(), 0);
