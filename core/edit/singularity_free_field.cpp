@@ -164,6 +164,7 @@ TensorField singularityFreeField(const TensorField& field, const RegionComplex& 
   std::vector<double> trace(count);
   std::optional<DirectionRepair> repaired;
   ReferenceField ref;
+  std::vector<double> theta;  // θ at every region vertex: held ones lifted, the rest a start
   std::optional<JumpLaplacian> laplacian;
   progress.report(0.1, "eigenvectors, reference field and the Laplacian");  // not from a worker
   tbb::parallel_invoke(
@@ -180,6 +181,14 @@ TensorField singularityFreeField(const TensorField& field, const RegionComplex& 
         const int seed = centralVertex(mesh, region);
         ref = referenceField(mesh, region, repaired->directions, seed, eig[seed].vectors.col(1),
                              report != nullptr);
+        // The held angles, lifted along the jumps (period π: the medium eigenvector is a line),
+        // while the multigrid may still be in set-up.
+        std::vector<double> raw(count, 0.0);
+        forEach(count, [&](int i) {
+          if (fixed[i])
+            raw[i] = signedAngle(ref.reference[i], eig[i].vectors.col(1), repaired->directions[i]);
+        });
+        theta = liftAngles(region, fixed, raw, ref.jumps, std::numbers::pi);
       },
       [&] { laplacian.emplace(mesh, region, fixed, progress, JumpLaplacian::HeldCheck::Assumed); });
   const std::vector<Vec3>& directions = repaired->directions;
@@ -194,14 +203,6 @@ TensorField singularityFreeField(const TensorField& field, const RegionComplex& 
   // Columns θ, λ1, λ3 (and the trace): θ with the jumps, the others harmonic.
   progress.report(0.4, "solving the angle field and the eigenvalues");
   const int width = hasTrace ? 4 : 3;
-  std::vector<double> raw(count, 0.0);
-  forEach(count, [&](int i) {
-    if (fixed[i]) {
-      raw[i] = signedAngle(ref.reference[i], eig[i].vectors.col(1), directions[i]);
-    }
-  });
-  // The held angles lifted along the jumps (period π: the medium eigenvector is a line).
-  const std::vector<double> theta = liftAngles(region, fixed, raw, ref.jumps, std::numbers::pi);
   std::vector<double> values(static_cast<std::size_t>(count) * width);
   forEach(count, [&](int i) {
     values[i * width] = theta[i];
