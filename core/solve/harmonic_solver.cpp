@@ -473,7 +473,9 @@ HarmonicSolver::~HarmonicSolver() = default;
 HarmonicSolver::HarmonicSolver(HarmonicSolver&&) noexcept = default;
 HarmonicSolver& HarmonicSolver::operator=(HarmonicSolver&&) noexcept = default;
 
-SolveResult HarmonicSolver::solve(std::vector<Tensor> values, const Progress& progress) const {
+template <bool WithTrace>
+SolveResult HarmonicSolver::solveTensors(std::vector<Tensor> values,
+                                         const Progress& progress) const {
   if (values.size() != impl_->mesh->vertexCount())
     throw Error("harmonic solve: expected " + std::to_string(impl_->mesh->vertexCount()) +
                 " tensors, got " + std::to_string(values.size()));
@@ -481,35 +483,29 @@ SolveResult HarmonicSolver::solve(std::vector<Tensor> values, const Progress& pr
   auto get = [&](int v, double* out) {
     const auto c = values[v].vec5();
     for (int k = 0; k < 5; ++k) out[k] = c[k];
+    if constexpr (WithTrace) out[5] = values[v].trace();
   };
   auto set = [&](int v, const double* in) {
-    values[v] = Tensor::fromVec5({in[0], in[1], in[2], in[3], in[4]});
+    Tensor t = Tensor::fromVec5({in[0], in[1], in[2], in[3], in[4]});
+    if constexpr (WithTrace) {
+      const double third = in[5] / 3;
+      t.xx += third, t.yy += third, t.zz += third;
+    }
+    values[v] = t;
   };
-  result.iterations = impl_->solveBlock<5>(get, set, progress, &result.relativeResidual);
+  constexpr int kColumns = WithTrace ? 6 : 5;
+  result.iterations = impl_->solveBlock<kColumns>(get, set, progress, &result.relativeResidual);
   result.values = std::move(values);
   return result;
 }
 
+SolveResult HarmonicSolver::solve(std::vector<Tensor> values, const Progress& progress) const {
+  return solveTensors<false>(std::move(values), progress);
+}
+
 SolveResult HarmonicSolver::solveWithTrace(std::vector<Tensor> values,
                                            const Progress& progress) const {
-  if (values.size() != impl_->mesh->vertexCount())
-    throw Error("harmonic solve: expected " + std::to_string(impl_->mesh->vertexCount()) +
-                " tensors, got " + std::to_string(values.size()));
-  SolveResult result;
-  auto get = [&](int v, double* out) {
-    const auto c = values[v].vec5();
-    for (int k = 0; k < 5; ++k) out[k] = c[k];
-    out[5] = values[v].trace();
-  };
-  auto set = [&](int v, const double* in) {
-    Tensor t = Tensor::fromVec5({in[0], in[1], in[2], in[3], in[4]});
-    const double third = in[5] / 3;
-    t.xx += third, t.yy += third, t.zz += third;
-    values[v] = t;
-  };
-  result.iterations = impl_->solveBlock<6>(get, set, progress, &result.relativeResidual);
-  result.values = std::move(values);
-  return result;
+  return solveTensors<true>(std::move(values), progress);
 }
 
 int HarmonicSolver::solveColumns(std::span<double> values, int width, const Progress& progress,

@@ -97,6 +97,8 @@ class HarmonicSolver {
 
  private:
   HarmonicSolver();
+  template <bool WithTrace>
+  SolveResult solveTensors(std::vector<Tensor> values, const Progress& progress) const;
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
