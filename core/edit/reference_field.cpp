@@ -36,7 +36,6 @@ class Propagation {
     // corners and edges are looked up once, when a tet joins). Each entry depends only on its
     // tet: filled in parallel (the same for any thread count), not zeroed first.
     nb_.reset(new std::array<int, 4>[tets]);
-    tetCount_ = tets;
     tbb::parallel_for(tbb::blocked_range<int>(0, tets, 1024),
                       [&](const tbb::blocked_range<int>& b) {
                         for (int lt = b.begin(); lt != b.end(); ++lt) {
@@ -67,7 +66,7 @@ class Propagation {
     add(seedTet);
     std::size_t count = 1;
     std::vector<int> deferred;
-    while (count < tetCount_) {
+    while (count < region_.tets.size()) {
       for (int t; (t = next()) >= 0;) {
         if (visited_[t]) continue;
         if (simple(t)) {
@@ -77,7 +76,7 @@ class Propagation {
           deferred.push_back(t);
         }
       }
-      if (count == tetCount_) break;
+      if (count == region_.tets.size()) break;
       // No tet keeps the set a ball: take the one sharing most faces (lowest index on ties).
       int best = -1, bestShared = 0;
       std::erase_if(deferred, [&](int t) { return visited_[t] != 0; });
@@ -87,8 +86,8 @@ class Propagation {
       }
       if (best < 0) {
         throw Error("reference field: the region is not connected through faces (" +
-                    std::to_string(tetCount_ - count) + " of " + std::to_string(tetCount_) +
-                    " tets unreachable)");
+                    std::to_string(region_.tets.size() - count) + " of " +
+                    std::to_string(region_.tets.size()) + " tets unreachable)");
       }
       ++out_.nonBallSteps;
       add(best);
@@ -152,7 +151,7 @@ class Propagation {
   /// maximum does not depend on the order.
   double maxHolonomyDefect() const {
     return tbb::parallel_reduce(
-        tbb::blocked_range<int>(0, static_cast<int>(tetCount_), 1024), 0.0,
+        tbb::blocked_range<int>(0, static_cast<int>(region_.tets.size()), 1024), 0.0,
         [&](const tbb::blocked_range<int>& b, double worst) {
           for (int t = b.begin(); t != b.end(); ++t) {
             const RegionTet r = corners(t);
@@ -248,7 +247,6 @@ class Propagation {
   const RegionComplex& region_;
   const std::vector<Vec3>& n_;
   std::unique_ptr<std::array<int, 4>[]> nb_;
-  std::size_t tetCount_ = 0;
   std::vector<char> visited_, hasU_, known_;
   /// Per tet, its faces shared with visited tets (kept as tets join, instead of reading the
   /// four neighbours' flags: a random access each).
