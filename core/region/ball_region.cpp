@@ -314,6 +314,10 @@ std::string lengthText(double d) {
 
 }  // namespace
 
+/// How many tets ahead the shrink starts loading a tet's rows (and half as many, what they
+/// point to).
+constexpr std::size_t kShrinkAhead = 16;
+
 std::string shrinkBall(TetSet& set, std::vector<std::pair<double, int>> keyed,
                        const Progress& progress) {
   // Farthest first, ties by id (a total order: the parallel sort's result is unique).
@@ -343,7 +347,15 @@ std::string shrinkBall(TetSet& set, std::vector<std::pair<double, int>> keyed,
   std::size_t removed = 0;
   for (int sweep = 0; sweep < 64; ++sweep) {
     std::size_t now = 0, kept = 0;
-    for (const int t : order) {
+    for (std::size_t i = 0; i < order.size(); ++i) {
+      // The order is known ahead and scattered over a shell: load each tet's rows, then what
+      // its tests read through them, before its turn.
+      if (i + kShrinkAhead < order.size()) {
+        set.prefetch(order[i + kShrinkAhead]);
+        __builtin_prefetch(&refusedAt[order[i + kShrinkAhead]]);
+      }
+      if (i + kShrinkAhead / 2 < order.size()) set.prefetchAround(order[i + kShrinkAhead / 2]);
+      const int t = order[i];
       const std::uint32_t sum = cornerSum(t);
       if (refusedAt[t] != sum) {  // else refused, and nothing changed around it since
         if (set.canRemove(t)) {

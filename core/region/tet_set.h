@@ -34,6 +34,18 @@ class TetSet {
     __builtin_prefetch(&mesh_.tets()[tet]);      // the simple-tet test's corners
     __builtin_prefetch(&mesh_.tetEdges()[tet]);  // or edges
   }
+  /// The second stage, once prefetch(tet) has had time to land: starts loading what the tests
+  /// read through the tet's corners, edges and neighbours (a loop that knows its order ahead,
+  /// as the shrink does, calls it a few tets before `tet`).
+  void prefetchAround(int tet) const {
+    for (int v : mesh_.tets()[tet]) __builtin_prefetch(&vertexCount_[v]);
+    for (int e : mesh_.tetEdges()[tet]) {
+      __builtin_prefetch(&edgeCount_[e]);
+      __builtin_prefetch(&edgeTets_[e]);
+    }
+    for (int n : rows_[tet].neighbours)
+      if (n >= 0) __builtin_prefetch(&in_[n]);
+  }
   std::size_t size() const { return size_; }
   /// Whether adding `tet` (not in the set) keeps a ball a ball; true for an empty set.
   bool canAdd(int tet) const;
