@@ -58,6 +58,15 @@ struct EigenDecomposition {
 /// complement. Residual ‖Tv − λv‖ is at rounding level of ‖T‖ for any input.
 EigenDecomposition eigenDecompose(const Tensor& t);
 
+/// Whether traces up to `maxTrace` in absolute value, among tensors of norms up to `maxNorm`,
+/// are more than rounding: above 1e-12 of the norm (a traceless design's traces are ~1e-16 of
+/// it). Edits solve the trace as one more harmonic column only then; rounding-level traces
+/// would only slow that solve down (its tolerance is relative to them), and the tensors solved
+/// without them are traceless.
+inline bool traceBeyondRounding(double maxTrace, double maxNorm) {
+  return maxTrace > 1e-12 * maxNorm;
+}
+
 /// Linear (λ2 < 0), planar (λ2 > 0) or neutral (λ2 = 0) by the deviator's middle eigenvalue.
 enum class TensorType { Linear, Planar, Neutral };
 /// `relativeTolerance` is compared with |λ2| / ‖A‖ to call a tensor neutral.

@@ -106,7 +106,7 @@ LocalSmoothResult smoothVertices(const TensorField& field, const std::vector<int
       }
     }
   }
-  const bool hasTrace = maxTrace > 1e-12 * maxNorm;
+  const bool hasTrace = traceBeyondRounding(maxTrace, maxNorm);
   const SolveResult solved = hasTrace ? harmonic.solveWithTrace(field.values(), progress)
                                       : harmonic.solve(field.values(), progress);
   report.iterations = solved.iterations;

@@ -1,6 +1,7 @@
 #include "core/edit/reconnect_field.h"
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 
 #include "core/solve/harmonic_solver.h"
@@ -66,8 +67,12 @@ TensorField reconnectField(const TensorField& field, const std::vector<int>& she
     if (!onSheet[v]) free.push_back(v);
   report.sidesSolved = free.size();
   if (free.empty()) return TensorField(field.meshPtr(), std::move(values));
-  bool hasTrace = false;
-  for (int v : rv.vertices) hasTrace = hasTrace || values[v].trace() != 0;
+  double maxTrace = 0, maxNorm = 0;
+  for (int v : rv.vertices) {
+    maxTrace = std::max(maxTrace, std::abs(values[v].trace()));
+    maxNorm = std::max(maxNorm, values[v].norm());
+  }
+  const bool hasTrace = traceBeyondRounding(maxTrace, maxNorm);
   const HarmonicSolver solver = HarmonicSolver::forRegion(field.meshPtr(), free);
   SolveResult solved = hasTrace ? solver.solveWithTrace(std::move(values), progress)
                                 : solver.solve(std::move(values), progress);

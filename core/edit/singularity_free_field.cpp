@@ -98,6 +98,7 @@ std::string SingularityFreeReport::summary() const {
     << regionVertices << " vertices solved (" << heldVertices << " held) in " << iterations
     << " iterations; smallest eigenvalue gaps " << freeMinGap12 << ", " << freeMinGap23
     << " inside (" << heldMinGap12 << ", " << heldMinGap23 << " held)";
+  if (traceSolved) s << "; trace solved beside them";
   if (nonBallSteps > 0) s << "; " << nonBallSteps << " tets not in a ball order";
   if (roughEdges > 0)
     s << "; non-repeating eigenvector smoothed at " << repairedDirections << " vertices around "
@@ -194,8 +195,13 @@ TensorField singularityFreeField(const TensorField& field, const RegionComplex& 
   const std::vector<Vec3>& directions = repaired->directions;
   r.roughEdges = repaired->roughEdges;
   r.repairedDirections = repaired->solvedVertices;
-  bool hasTrace = false;
-  for (int i = 0; i < count; ++i) hasTrace = hasTrace || (fixed[i] && trace[i] != 0);
+  double maxTrace = 0, maxNorm = 0;  // at the held vertices, whose values the solve spreads
+  for (int i = 0; i < count; ++i) {
+    if (!fixed[i]) continue;
+    maxTrace = std::max(maxTrace, std::abs(trace[i]));
+    maxNorm = std::max(maxNorm, field.at(region.vertices[i]).norm());
+  }
+  const bool hasTrace = r.traceSolved = traceBeyondRounding(maxTrace, maxNorm);
   r.nonBallSteps = ref.nonBallSteps;
   r.maxHolonomyDefect = ref.maxHolonomyDefect;
   progress.throwIfCancelled();

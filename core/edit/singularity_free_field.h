@@ -60,6 +60,9 @@ struct SingularityFreeReport {
   double maxHolonomyDefect = 0;  ///< see ReferenceField
   int iterations = 0;
   double relativeResidual = 0;
+  /// Whether the held vertices carry a trace beyond rounding (traceBeyondRounding()), solved as
+  /// one more harmonic column; otherwise the solved tensors are traceless.
+  bool traceSolved = false;
   /// Smallest eigenvalue gaps (λ1 − λ2 and λ2 − λ3 of the deviator) over the held vertices and
   /// over the solved ones.
   double heldMinGap12 = 0, heldMinGap23 = 0, freeMinGap12 = 0, freeMinGap23 = 0;

@@ -193,6 +193,45 @@ TEST(SingularityFreeField, KeepsTheNonRepeatingEigenvectorAndPositiveGapsInside)
   EXPECT_LT(inputMin23, 0.5 * freeMin23);
 }
 
+// A designed isotropic part is spread harmonically from the held vertices (a linear trace
+// exactly, to the solver's tolerance); a trace at rounding level is not a design: it is left
+// out of the solve (one column less, whose tolerance relative to it would cost iterations)
+// and the solved tensors are traceless.
+TEST(SingularityFreeField, SolvesADesignedTraceAndLeavesRoundingOut) {
+  const ArchCase c;
+  auto withTrace = [&](auto&& trace) {
+    std::vector<Tensor> values = c.field.values();
+    for (std::size_t v = 0; v < values.size(); ++v) {
+      const double t = trace(c.mesh->positions()[v], v) / 3;
+      values[v].xx += t, values[v].yy += t, values[v].zz += t;
+    }
+    return TensorField(c.mesh, values);
+  };
+  // Linear and constant across the region's one stretch of domain surface (z = 0), where the
+  // solve has the natural boundary condition: exactly harmonic there too.
+  auto linear = [](const Vec3& p) { return 0.3 * p.x() - 0.2 * p.y() + 0.1; };
+  SingularityFreeReport designed;
+  const TensorField solved =
+      singularityFreeField(withTrace([&](const Vec3& p, std::size_t) { return linear(p); }),
+                           c.region, c.noHeld(), DegenerateType::Linear, {}, &designed);
+  EXPECT_TRUE(designed.traceSolved);
+  EXPECT_GT(designed.freeVertices, 100u);
+  for (std::size_t v = 0; v < c.mesh->vertexCount(); ++v)
+    EXPECT_NEAR(solved.at(int(v)).trace(), linear(c.mesh->positions()[v]), 1e-8) << v;
+
+  SingularityFreeReport rounding;  // traces of a few ulps, as sums of rotated tensors leave
+  const TensorField noisy =
+      withTrace([](const Vec3&, std::size_t v) { return (int(v % 7) - 3) * 2e-16; });
+  const TensorField traceless =
+      singularityFreeField(noisy, c.region, c.noHeld(), DegenerateType::Linear, {}, &rounding);
+  EXPECT_FALSE(rounding.traceSolved);
+  EXPECT_EQ(rounding.freeVertices, designed.freeVertices);
+  const RegionComplex region = regionComplex(*c.mesh, c.region);
+  for (int v : region.vertices)
+    if (!bitwiseEqual(traceless.at(v), noisy.at(v)))  // solved
+      EXPECT_NEAR(traceless.at(v).trace(), 0, 1e-14) << v;
+}
+
 TEST(SingularityFreeField, HeldInteriorVerticesKeepTheirValues) {
   const ArchCase c;
   std::vector<char> held = c.noHeld();
