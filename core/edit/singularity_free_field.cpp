@@ -223,6 +223,7 @@ TensorField singularityFreeField(const TensorField& field, const RegionComplex& 
   JumpSolveOptions solve;
   solve.tolerance = 1e-8;
   const JumpSolveResult solved = laplacian->solve(ref.jumps, values, width, solve, progress);
+  r.iterations = solved.iterations;
   r.relativeResidual = solved.relativeResidual;
 
   // Recombine at the solved vertices: frame (N, medium, N × medium) and λ1, −λ1 − λ3, λ3.

@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <string>
 
 #include "core/derived_cache.h"
 #include "core/edit/region_complex.h"
@@ -184,6 +185,12 @@ TEST(SingularityFreeField, KeepsTheNonRepeatingEigenvectorAndPositiveGapsInside)
   EXPECT_GE(freeMin23, heldMin23 - 1e-9);
   EXPECT_NEAR(report.freeMinGap12, freeMin12, 1e-9);
   EXPECT_NEAR(report.freeMinGap23, freeMin23, 1e-9);
+  // The solve's own figures reach the report (a lost assignment once left them at 0).
+  EXPECT_GT(report.iterations, 0);
+  EXPECT_GT(report.relativeResidual, 0);
+  EXPECT_LE(report.relativeResidual, 1e-7);
+  EXPECT_NE(report.summary().find(" in " + std::to_string(report.iterations) + " iterations"),
+            std::string::npos);
   // The input's gap λ2 − λ3 vanishes on the arch inside the region; the new one does not.
   double inputMin23 = 1e300;
   for (int v : region.vertices) {
