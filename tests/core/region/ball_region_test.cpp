@@ -3,6 +3,7 @@
 // (core/region/ball_region.h), each checked against the other and on sets whose topology is
 // known (tori, shells, separate pieces).
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include <algorithm>
 #include <cmath>
@@ -209,6 +210,29 @@ TEST(BallRegion, ALineAcrossTheBoxMakesARegionOnTheDomainSurfaceWithFreeSurfaceV
     EXPECT_EQ(bool(rv.held[v]), outside);
   }
   EXPECT_EQ(rv.free.size() + std::count(rv.held.begin(), rv.held.end(), 1), rv.vertices.size());
+  // Its parallel passes give what one direct pass gives, with one thread or several.
+  std::size_t surface = 0, heldFaces = 0, freeOnSurface = 0;
+  for (int t : r.tets)
+    for (int f : mesh->tetFaces()[t]) {
+      const auto& ft = mesh->faceTets()[f];
+      const int other = ft[0] == t ? ft[1] : ft[0];
+      surface += other < 0;
+      heldFaces += other >= 0 && !in[other];
+    }
+  std::vector<int> free;
+  for (int v : rv.vertices)
+    if (!rv.held[v]) free.push_back(v), freeOnSurface += mesh->isBoundaryVertex(v);
+  EXPECT_EQ(rv.surfaceFaces, surface);
+  EXPECT_EQ(rv.heldFaces, heldFaces);
+  EXPECT_EQ(rv.freeOnSurface, freeOnSurface);
+  EXPECT_EQ(rv.free, free);
+  EXPECT_TRUE(std::is_sorted(rv.vertices.begin(), rv.vertices.end()));
+  tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+  const RegionVertices single = regionVertices(*mesh, r.tets);
+  EXPECT_EQ(single.vertices, rv.vertices);
+  EXPECT_EQ(single.held, rv.held);
+  EXPECT_EQ(single.surfaceFaces, rv.surfaceFaces);
+  EXPECT_EQ(single.heldFaces, rv.heldFaces);
 }
 
 }  // namespace
