@@ -18,6 +18,7 @@
 #include "core/edit/smooth_directions.h"
 #include "core/edit/vectorise_eigenvector.h"
 #include "core/error.h"
+#include "core/solve/harmonic_solver.h"
 
 namespace tfd::core {
 namespace {
@@ -221,7 +222,7 @@ TensorField singularityFreeField(const TensorField& field, const RegionComplex& 
   // moves a degenerate point, in three iterations fewer than 1e-10 took (16 → 13 on the 1M
   // torus's removal).
   JumpSolveOptions solve;
-  solve.tolerance = 1e-8;
+  solve.tolerance = SolverOptions{}.tolerance;
   const JumpSolveResult solved = laplacian->solve(ref.jumps, values, width, solve, progress);
   r.iterations = solved.iterations;
   r.relativeResidual = solved.relativeResidual;
