@@ -96,8 +96,11 @@ double hashUnit(std::uint64_t i) {
 
 template <class Real>
 struct Level {
-  CsrMatrix<Real> ownedA;
-  const CsrMatrix<Real>* a = nullptr;
+  CsrMatrix<Real> ownedA;  ///< levels below the finest
+  /// The finest level in float: the fine matrix's values (its row starts and column indices
+  /// are the fine matrix's own, not copied).
+  std::vector<Real> fineValues;
+  CsrView<Real> a;    ///< the level's matrix (set by finishViews)
   CsrMatrix<Real> p;  ///< rows × next rows
   CsrMatrix<Real> r;  ///< pᵀ
   std::vector<Real> invDiag;
@@ -194,6 +197,20 @@ class AmgPreconditioner::Workspace {
 
 namespace {
 
+/// A level's matrix `a` (the fine matrix at level 0, else `current`, which it may take):
+/// the finest is referenced (in float, only its values are copied), the others owned.
+template <class Real>
+void keepMatrix(Level<Real>& lv, int level, const CsrMatrix<double>& a,
+                CsrMatrix<double>& current) {
+  if constexpr (std::is_same_v<Real, double>) {
+    if (level > 0) lv.ownedA = std::move(current);
+  } else if (level == 0) {
+    lv.fineValues.assign(a.value.begin(), a.value.end());
+  } else {
+    lv.ownedA = convert<float>(a);
+  }
+}
+
 template <class Real>
 void buildHierarchy(const CsrMatrix<double>& fine, const AmgOptions& options, Hierarchy<Real>& h,
                     std::vector<AmgLevelInfo>& info) {
@@ -224,14 +241,7 @@ void buildHierarchy(const CsrMatrix<double>& fine, const AmgOptions& options, Hi
       lv.lambdaMax = level == 0 && options.fineLambdaMax > 0 ? options.fineLambdaMax
                                                              : estimateLambdaMax(*a, 12) * 1.1;
       li.lambdaMax = lv.lambdaMax;
-      if constexpr (std::is_same_v<Real, double>) {
-        if (level == 0)
-          lv.a = &fine;
-        else
-          lv.ownedA = std::move(current);
-      } else {
-        lv.ownedA = convert<float>(*a);
-      }
+      keepMatrix(lv, level, *a, current);
       lv.invDiag.resize(diag.size());
       for (std::size_t i = 0; i < diag.size(); ++i)
         lv.invDiag[i] = static_cast<Real>(1.0 / diag[i]);
@@ -279,16 +289,11 @@ void buildHierarchy(const CsrMatrix<double>& fine, const AmgOptions& options, Hi
     // Galerkin coarse matrix RAP. Its rounding-level asymmetry is harmless: the coarsest
     // dense factorisation uses the symmetric part, and the float cycle perturbs far more.
     CsrMatrix<double> coarse = product(r, product(*a, p));
+    keepMatrix(lv, level, *a, current);
     if constexpr (std::is_same_v<Real, double>) {
-      if (level == 0) {
-        lv.a = &fine;
-      } else {
-        lv.ownedA = std::move(current);
-      }
       lv.p = std::move(p);
       lv.r = std::move(r);
     } else {
-      lv.ownedA = convert<float>(*a);
       lv.p = convert<float>(p);
       lv.r = convert<float>(r);
     }
@@ -302,16 +307,24 @@ void buildHierarchy(const CsrMatrix<double>& fine, const AmgOptions& options, Hi
 }
 
 template <class Real>
-void finishPointers(Hierarchy<Real>& h) {
-  for (auto& lv : h.levels)
-    if (lv.a == nullptr) lv.a = &lv.ownedA;
+void finishViews(Hierarchy<Real>& h, const CsrMatrix<double>& fine) {
+  for (std::size_t level = 0; level < h.levels.size(); ++level) {
+    Level<Real>& lv = h.levels[level];
+    if (level > 0) {
+      lv.a = view(lv.ownedA);
+    } else if constexpr (std::is_same_v<Real, double>) {
+      lv.a = view(fine);
+    } else {
+      lv.a = {fine.rows, fine.start.data(), fine.index.data(), lv.fineValues.data()};
+    }
+  }
 }
 
 /// Chebyshev smoothing of A x = b (x updated in place; zeroInitial means x = 0 on entry).
 template <int W, class Real>
 void chebyshev(const Level<Real>& lv, int degree, double ratio, const Real* b, Real* x, Real* r,
                Real* d, bool zeroInitial) {
-  const std::size_t n = static_cast<std::size_t>(lv.a->rows);
+  const std::size_t n = static_cast<std::size_t>(lv.a.rows);
   const double lmax = lv.lambdaMax, lmin = lmax / ratio;
   const double theta = 0.5 * (lmax + lmin), delta = 0.5 * (lmax - lmin);
   const double sigma = theta / delta;
@@ -319,7 +332,7 @@ void chebyshev(const Level<Real>& lv, int degree, double ratio, const Real* b, R
   const Real* invD = lv.invDiag.data();
   const Real* rr = b;  // residual source
   if (!zeroInitial) {
-    const CsrMatrix<Real>& a = *lv.a;
+    const CsrView<Real>& a = lv.a;
     parallelRanges(
         n,
         [&](std::size_t bg, std::size_t e) {
@@ -347,7 +360,7 @@ void chebyshev(const Level<Real>& lv, int degree, double ratio, const Real* b, R
     }
   });
   for (int step = 1; step < degree; ++step) {
-    const CsrMatrix<Real>& a = *lv.a;
+    const CsrView<Real>& a = lv.a;
     parallelRanges(
         n,
         [&](std::size_t bg, std::size_t e) {
@@ -383,10 +396,10 @@ AmgPreconditioner::AmgPreconditioner(const CsrMatrix<double>& a, const AmgOption
   if (a.rows == 0) throw Error("multigrid set-up: empty matrix");
   if (impl_->options.singlePrecision) {
     buildHierarchy(a, impl_->options, impl_->single, impl_->info);
-    finishPointers(impl_->single);
+    finishViews(impl_->single, a);
   } else {
     buildHierarchy(a, impl_->options, impl_->twice, impl_->info);
-    finishPointers(impl_->twice);
+    finishViews(impl_->twice, a);
   }
 }
 
@@ -401,7 +414,8 @@ template <class Real>
 std::size_t hierarchyBytes(const Hierarchy<Real>& h) {
   std::size_t total = 0;
   for (const auto& l : h.levels)
-    total += l.ownedA.bytes() + l.p.bytes() + l.r.bytes() + l.invDiag.size() * sizeof(Real);
+    total += l.ownedA.bytes() + l.fineValues.size() * sizeof(Real) + l.p.bytes() + l.r.bytes() +
+             l.invDiag.size() * sizeof(Real);
   return total + static_cast<std::size_t>(h.coarseRows) * h.coarseRows * sizeof(double);
 }
 }  // namespace
@@ -462,8 +476,8 @@ void vcycle(const Hierarchy<Real>& h, const AmgOptions& o, std::size_t level, co
     return;
   }
   chebyshev<W>(lv, o.smootherDegree, o.eigenRatio, b, x, r, d, true);
-  const std::size_t n = static_cast<std::size_t>(lv.a->rows);
-  const CsrMatrix<Real>& a = *lv.a;
+  const std::size_t n = static_cast<std::size_t>(lv.a.rows);
+  const CsrView<Real>& a = lv.a;
   parallelRanges(
       n,
       [&](std::size_t bg, std::size_t e) {

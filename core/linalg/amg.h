@@ -45,8 +45,9 @@ class AmgPreconditioner {
   /// Scratch vectors for one apply() at a time; make one per concurrent solve.
   class Workspace;
 
-  /// Builds the hierarchy. With singlePrecision == false the fine matrix is referenced, not
-  /// copied: `a` must then outlive the preconditioner. Throws core::Error when a coarse
+  /// Builds the hierarchy. The fine matrix is referenced, not copied (in single precision its
+  /// values are, its row starts and column indices are shared): `a` must outlive the
+  /// preconditioner and stay unchanged. Throws core::Error when a coarse
   /// matrix is not positive definite (the input was singular).
   explicit AmgPreconditioner(const CsrMatrix<double>& a, const AmgOptions& options = {});
   ~AmgPreconditioner();

@@ -28,6 +28,22 @@ struct CsrMatrix {
   }
 };
 
+/// A CSR matrix's arrays, borrowed: what the product kernels read. Lets a copy of a matrix in
+/// another precision share the original's row starts and column indices (the multigrid's float
+/// copy of the fine matrix, linalg/amg.h).
+template <class Real>
+struct CsrView {
+  int rows = 0;
+  const int* start = nullptr;
+  const int* index = nullptr;
+  const Real* value = nullptr;
+};
+
+template <class Real>
+CsrView<Real> view(const CsrMatrix<Real>& a) {
+  return {a.rows, a.start.data(), a.index.data(), a.value.data()};
+}
+
 /// The same matrix with values converted to another precision.
 template <class To, class From>
 CsrMatrix<To> convert(const CsrMatrix<From>& a) {
@@ -61,11 +77,11 @@ struct Simd16<double> {
 /// Rows [begin, end) of y = A x (W columns; Real and V may differ, sums in V). With
 /// accumulate, y += A x instead.
 template <int W, class Real, class V, bool accumulate = false>
-inline void multiplyRows(const CsrMatrix<Real>& a, const V* x, V* y, std::size_t begin,
+inline void multiplyRows(const CsrView<Real>& a, const V* x, V* y, std::size_t begin,
                          std::size_t end) {
-  const int* start = a.start.data();
-  const int* index = a.index.data();
-  const Real* value = a.value.data();
+  const int* start = a.start;
+  const int* index = a.index;
+  const Real* value = a.value;
   constexpr int lanes = static_cast<int>(16 / sizeof(V));
   constexpr int nv = W / lanes;    // whole 16-byte vectors per block row
   constexpr int rest = W % lanes;  // remaining scalar columns
@@ -119,6 +135,12 @@ inline void multiplyRows(const CsrMatrix<Real>& a, const V* x, V* y, std::size_t
       yi[nv * lanes + c] = accumulate ? yi[nv * lanes + c] + t : t;
     }
   }
+}
+
+template <int W, class Real, class V, bool accumulate = false>
+inline void multiplyRows(const CsrMatrix<Real>& a, const V* x, V* y, std::size_t begin,
+                         std::size_t end) {
+  multiplyRows<W, Real, V, accumulate>(view(a), x, y, begin, end);
 }
 
 /// y = A x in parallel.

@@ -112,5 +112,16 @@ TEST(Amg, MatrixThatIsNotPositiveDefiniteIsRefused) {
   EXPECT_THROW(AmgPreconditioner m(a), Error);
 }
 
+TEST(Amg, SinglePrecisionSharesTheFineMatrixStructure) {
+  // The double-precision hierarchy references the fine matrix; the float one copies only its
+  // values (4 bytes an entry), not its row starts and column indices, so with its float
+  // prolongators and coarse levels it holds less. A full float copy of the fine matrix (8
+  // bytes an entry) made it hold more: 2.26 MB against 2.14 MB here.
+  const CsrMatrix<double> a = poisson3d(24);
+  AmgOptions twice;
+  twice.singlePrecision = false;
+  EXPECT_LT(AmgPreconditioner(a).bytes(), AmgPreconditioner(a, twice).bytes());
+}
+
 }  // namespace
 }  // namespace tfd::core::linalg
