@@ -47,8 +47,8 @@ AngleDefects angleDefects(const TensorField& field, const RegionComplex& region,
     for (int i = 0; i < 3; ++i) {
       const int local = region.localVertex(f[i]);
       nf[i] = n.directions[local];
-      mf[i] =
-          (decomposed ? n.eigen[local] : eigenDecompose(field.at(f[i]).deviator())).vectors.col(1);
+      mf[i] = decomposed ? n.eigen[local].medium
+                         : Vec3(eigenDecompose(field.at(f[i]).deviator()).vectors.col(1));
     }
     try {
       return lineFieldIndex(nf, mf);

@@ -123,7 +123,10 @@ std::vector<double> liftAngles(const RegionComplex& region, const std::vector<ch
 
 struct JumpLaplacian::System {
   std::vector<int> freeLocal, row;  ///< free local vertices; local vertex -> matrix row or -1
-  std::vector<double> weight;       ///< K_ij per local edge
+  /// K_ij of each free row's held neighbours j, in the row's neighbour order, from
+  /// heldStart[r] (the free neighbours' are the off-diagonal entries of `a`).
+  std::vector<int> heldStart;
+  std::vector<double> heldWeight;
   linalg::CsrMatrix<double> a;
   std::optional<linalg::AmgPreconditioner> amg;
 };
@@ -152,36 +155,45 @@ JumpLaplacian::JumpLaplacian(const TetMesh& mesh, const RegionComplex& region,
                       " has a tet outside the region");
     }
   }
-  s.weight = edgeStiffness(mesh, region, s.row);
+  const std::vector<double> weight = edgeStiffness(mesh, region, s.row);  // per local edge
   // K_FF row by row: the off-diagonals in neighbour order with the diagonal placed before the
-  // first higher column. Rows are independent: counted, then filled, in parallel.
+  // first higher column; the held neighbours' weights beside it (for the right-hand sides).
+  // Rows are independent: counted, then filled, in parallel.
   const int m = static_cast<int>(s.freeLocal.size());
   linalg::CsrMatrix<double>& a = s.a;
   a.rows = a.cols = m;
   a.start.assign(m + 1, 0);
+  s.heldStart.assign(m + 1, 0);
   tbb::parallel_for(tbb::blocked_range<int>(0, m, 4096), [&](const tbb::blocked_range<int>& b) {
     for (int r = b.begin(); r != b.end(); ++r) {
       const int i = s.freeLocal[r];
-      int count = 1;  // the diagonal
-      for (int k = region.start[i]; k < region.start[i + 1]; ++k)
-        count += s.row[region.neighbour[k]] >= 0;
+      int count = 1, held = 0;  // the diagonal
+      for (int k = region.start[i]; k < region.start[i + 1]; ++k) {
+        const bool isFree = s.row[region.neighbour[k]] >= 0;
+        count += isFree, held += !isFree;
+      }
       a.start[r + 1] = count;
+      s.heldStart[r + 1] = held;
     }
   });
-  for (int r = 0; r < m; ++r) a.start[r + 1] += a.start[r];
+  for (int r = 0; r < m; ++r) a.start[r + 1] += a.start[r], s.heldStart[r + 1] += s.heldStart[r];
   a.index.resize(a.start[m]);
   a.value.resize(a.start[m]);
+  s.heldWeight.resize(s.heldStart[m]);
   tbb::parallel_for(tbb::blocked_range<int>(0, m, 4096), [&](const tbb::blocked_range<int>& b) {
     for (int r = b.begin(); r != b.end(); ++r) {
       const int i = s.freeLocal[r];
-      int at = a.start[r], diagonal = -1;
+      int at = a.start[r], diagonal = -1, held = s.heldStart[r];
       double offDiagonal = 0;
       for (int k = region.start[i]; k < region.start[i + 1]; ++k) {
         const int j = region.neighbour[k];
         if (diagonal < 0 && j > i) diagonal = at++;
-        const double kij = s.weight[region.neighbourEdge[k]];
+        const double kij = weight[region.neighbourEdge[k]];
         offDiagonal += kij;
-        if (s.row[j] >= 0) a.index[at] = s.row[j], a.value[at++] = kij;
+        if (s.row[j] >= 0)
+          a.index[at] = s.row[j], a.value[at++] = kij;
+        else
+          s.heldWeight[held++] = kij;
       }
       if (diagonal < 0) diagonal = at++;
       a.index[diagonal] = r;
@@ -213,15 +225,22 @@ JumpSolveResult JumpLaplacian::solve(const std::vector<double>& jumps, std::vect
   if (s.freeLocal.empty()) return result;
   const int m = static_cast<int>(s.freeLocal.size());
   std::vector<double> rhs(static_cast<std::size_t>(m) * width, 0.0), x(rhs.size());
+  const linalg::CsrMatrix<double>& a = s.a;
   tbb::parallel_for(tbb::blocked_range<int>(0, m, 4096), [&](const tbb::blocked_range<int>& b) {
     for (int r = b.begin(); r != b.end(); ++r) {
       const int i = s.freeLocal[r];
+      // K_ij from the row of K_FF (skipping its diagonal, placed before the first higher
+      // column) or from the held weights, in the row's neighbour order.
+      int at = a.start[r], held = s.heldStart[r];
+      bool diagonal = false;
       for (int k = region.start[i]; k < region.start[i + 1]; ++k) {
         const int j = region.neighbour[k], edge = region.neighbourEdge[k];
-        const double kij = s.weight[edge];
+        if (!diagonal && j > i) diagonal = true, ++at;
+        const bool isFree = s.row[j] >= 0;
+        const double kij = isFree ? a.value[at++] : s.heldWeight[held++];
         for (int c = 0; c < jumpColumns; ++c)  // r_i = Σ_j K_ij g_ij (Eq. 6)
           rhs[r * width + c] += kij * orientedJump(jumps[edge * jumpColumns + c], i, j);
-        if (s.row[j] < 0) {  // − Σ_{j held} K_ij θ_j
+        if (!isFree) {  // − Σ_{j held} K_ij θ_j
           for (int c = 0; c < width; ++c) rhs[r * width + c] -= kij * values[j * width + c];
         }
       }

@@ -71,7 +71,7 @@ int centralVertex(const TetMesh& mesh, const RegionComplex& region) {
 DirectionRepair repairDirections(const TetMesh& mesh, const RegionComplex& region,
                                  const std::vector<Vec3>& directions,
                                  const std::vector<char>& fixed,
-                                 const std::vector<EigenDecomposition>& eig, DegenerateType type,
+                                 const std::vector<ValuesAndMedium>& eig, DegenerateType type,
                                  bool everyFastTurn, const Progress& progress) {
   const int count = static_cast<int>(region.vertices.size());
   std::vector<char> weak(count, 1);
@@ -161,8 +161,8 @@ TensorField singularityFreeField(const TensorField& field, const RegionComplex& 
   // The deviator's eigen-decomposition per region vertex (medium eigenvector, values): the
   // vectorisation's when it kept them (the same decompositions of the same tensors).
   const bool decomposed = n.eigen.size() == static_cast<std::size_t>(count);
-  std::vector<EigenDecomposition> computed(decomposed ? 0 : count);
-  const std::vector<EigenDecomposition>& eig = decomposed ? n.eigen : computed;
+  std::vector<ValuesAndMedium> computed(decomposed ? 0 : count);
+  const std::vector<ValuesAndMedium>& eig = decomposed ? n.eigen : computed;
   std::vector<double> trace(count);
   std::optional<DirectionRepair> repaired;
   ReferenceField ref;
@@ -173,7 +173,7 @@ TensorField singularityFreeField(const TensorField& field, const RegionComplex& 
       [&] {
         forEach(count, [&](int i) {
           const Tensor& t = field.at(region.vertices[i]);
-          if (!decomposed) computed[i] = eigenDecompose(t.deviator());
+          if (!decomposed) computed[i] = ValuesAndMedium::of(eigenDecompose(t.deviator()));
           trace[i] = t.trace();
         });
         progress.throwIfCancelled();
@@ -181,14 +181,14 @@ TensorField singularityFreeField(const TensorField& field, const RegionComplex& 
                                     smoothEveryFastTurn, progress);
         progress.throwIfCancelled();
         const int seed = centralVertex(mesh, region);
-        ref = referenceField(mesh, region, repaired->directions, seed, eig[seed].vectors.col(1),
+        ref = referenceField(mesh, region, repaired->directions, seed, eig[seed].medium,
                              report != nullptr);
         // The held angles, lifted along the jumps (period π: the medium eigenvector is a line),
         // while the multigrid may still be in set-up.
         std::vector<double> raw(count, 0.0);
         forEach(count, [&](int i) {
           if (fixed[i])
-            raw[i] = signedAngle(ref.reference[i], eig[i].vectors.col(1), repaired->directions[i]);
+            raw[i] = signedAngle(ref.reference[i], eig[i].medium, repaired->directions[i]);
         });
         theta = liftAngles(region, fixed, raw, ref.jumps, std::numbers::pi);
       },

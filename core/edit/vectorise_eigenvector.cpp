@@ -116,11 +116,12 @@ VectorisedEigenvector vectoriseEigenvector(const TensorField& field, const Regio
   const int column = nonRepeatingColumn(type);
   std::vector<Vec3> dirs(n);
   std::vector<double> gap(n);
-  std::vector<EigenDecomposition> eigen(n);
+  std::vector<ValuesAndMedium> eigen(n);
   tbb::parallel_for(tbb::blocked_range<int>(0, n, 256), [&](const tbb::blocked_range<int>& r) {
     for (int i = r.begin(); i != r.end(); ++i) {
       const Tensor a = field.at(region.vertices[i]).deviator();
-      const EigenDecomposition& d = eigen[i] = eigenDecompose(a);
+      const EigenDecomposition d = eigenDecompose(a);
+      eigen[i] = ValuesAndMedium::of(d);
       dirs[i] = d.vectors.col(column).normalized();
       gap[i] = isolation(d, type, a.norm());
     }

@@ -25,6 +25,13 @@
 
 namespace tfd::core {
 
+/// Eigenvalues (descending) and the medium eigenvector of one decomposition: half its bytes.
+struct ValuesAndMedium {
+  Vec3 values;
+  Vec3 medium;
+  static ValuesAndMedium of(const EigenDecomposition& d) { return {d.values, d.vectors.col(1)}; }
+};
+
 /// Which eigenvector does not repeat at a degenerate point of `type`: the major one for
 /// Linear (λ2 = λ3), the minor one for Planar (λ1 = λ2).
 /// The non-repeating eigenvector made a vector field over the vertices of `regionTets` by
@@ -33,9 +40,10 @@ namespace tfd::core {
 struct VectorisedEigenvector {
   std::vector<int> vertices;     ///< region vertices, ascending
   std::vector<Vec3> directions;  ///< unit, one per entry of `vertices`
-  /// Per entry of `vertices`: the eigen-decomposition of the field's deviator there, whose
-  /// non-repeating column (up to sign) is the direction (kept for the singularity-free field).
-  std::vector<EigenDecomposition> eigen;
+  /// Per entry of `vertices`: what the singularity-free field and the angle defects read of
+  /// the eigen-decomposition of the field's deviator there (whose non-repeating column is the
+  /// direction, up to sign).
+  std::vector<ValuesAndMedium> eigen;
   int signConflicts = 0;  ///< region edges whose two directions disagree in sign (0 when the
                           ///< region holds no degenerate point)
   int seed = -1;          ///< mesh id of the seed vertex
