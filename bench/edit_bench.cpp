@@ -30,6 +30,7 @@
 //    (a worst case: the merged loop bounds a band all round the torus).
 // Commands and figures: bench/RESULTS.md.
 #include <benchmark/benchmark.h>
+#include <sys/resource.h>
 
 #include <algorithm>
 #include <chrono>
@@ -73,6 +74,25 @@ double peakMegabytes() {
     if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024;
   return 0;
 }
+
+/// The kernel's side of a cook: page faults (each a fresh page the kernel zeroes, and on this
+/// kind of virtual machine one the host may have to back again) and system time.
+struct MemoryGrowth {
+  double pageFaults = 0, systemSeconds = 0;
+  static MemoryGrowth now() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return {double(usage.ru_minflt + usage.ru_majflt),
+            double(usage.ru_stime.tv_sec) + 1e-6 * double(usage.ru_stime.tv_usec)};
+  }
+  MemoryGrowth operator-(const MemoryGrowth& o) const {
+    return {pageFaults - o.pageFaults, systemSeconds - o.systemSeconds};
+  }
+  MemoryGrowth& operator+=(const MemoryGrowth& o) {
+    pageFaults += o.pageFaults, systemSeconds += o.systemSeconds;
+    return *this;
+  }
+};
 
 /// FNV-1a over the bytes of the edited field, the region's tets and the curves' points: the
 /// label of a verified 1M result, so that two builds can be checked to give bit-for-bit the
@@ -820,17 +840,22 @@ void runTwoLoops(benchmark::State& state, const TensorField& field, std::vector<
   RemoveCurvesResult last{field, {}, {}, {}};
   bool verified = true;
   double processCpu = 0;  // seconds, all threads: on a loaded machine a bound for a quiet one
+  MemoryGrowth growth;    // fresh pages: what a first cook pays the host for (RESULTS, session 11)
   for (auto _ : state) {
     const std::clock_t c0 = std::clock();
+    const MemoryGrowth before = MemoryGrowth::now();
     try {
       last = removeCurves(field, o);
     } catch (const RemovalFailed& e) {  // reported, not hidden
       verified = false;
       state.SetLabel(e.what());
     }
+    growth += MemoryGrowth::now() - before;
     processCpu += double(std::clock() - c0) / CLOCKS_PER_SEC;
   }
   state.counters["cpu_all_threads_s"] = processCpu;
+  state.counters["system_s"] = growth.systemSeconds;
+  state.counters["page_faults"] = growth.pageFaults;
   if (verified)  // the report (both steps' regions and times) on stderr
     for (const std::string& line : last.report.lines())
       std::fprintf(stderr, "  %s\n", line.c_str());

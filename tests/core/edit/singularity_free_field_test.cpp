@@ -234,9 +234,11 @@ TEST(SingularityFreeField, SolvesADesignedTraceAndLeavesRoundingOut) {
   EXPECT_FALSE(rounding.traceSolved);
   EXPECT_EQ(rounding.freeVertices, designed.freeVertices);
   const RegionComplex region = regionComplex(*c.mesh, c.region);
-  for (int v : region.vertices)
-    if (!bitwiseEqual(traceless.at(v), noisy.at(v)))  // solved
+  for (int v : region.vertices) {
+    if (!bitwiseEqual(traceless.at(v), noisy.at(v))) {  // solved
       EXPECT_NEAR(traceless.at(v).trace(), 0, 1e-14) << v;
+    }
+  }
 }
 
 TEST(SingularityFreeField, HeldInteriorVerticesKeepTheirValues) {
