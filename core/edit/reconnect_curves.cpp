@@ -18,6 +18,7 @@
 #include "core/region/ball_check.h"
 #include "core/region/ball_region.h"
 #include "core/region/region_vertices.h"
+#include "core/small_pages.h"
 #include "core/topology/curve_tets.h"
 
 namespace tfd::core {
@@ -220,6 +221,7 @@ std::vector<std::string> ReconnectCurvesReport::lines() const {
 
 ReconnectCurvesResult reconnectCurves(const TensorField& field, const ReconnectCurvesOptions& o,
                                       const Progress& progress) {
+  const SmallPagesScope smallPages;  // an edit's arrays live for one cook (core/small_pages.h)
   const auto start = std::chrono::steady_clock::now();
   const TetMesh& mesh = field.mesh();
   const EditRetries plan = editRetries(mesh, o.regionDistance, o.retries, o.growFactor);
