@@ -49,8 +49,8 @@ int main(int argc, char** argv) {
   const std::size_t mb = argc > 1 ? std::strtoul(argv[1], nullptr, 10) : 200;
   const unsigned pause = argc > 2 ? std::strtoul(argv[2], nullptr, 10) : 3;
   const int rounds = argc > 3 ? std::atoi(argv[3]) : 3;
-  std::printf("ms per MB, %zu MB, pause %u s   fresh 4K   fresh 2M   recycled 4K   recycled 2M\n",
-              mb, pause);
+  std::printf("ms per MB touched, %zu MB mappings, %u s pause before each fresh one\n", mb, pause);
+  std::printf("round   fresh 4K   fresh 2M   recycled 4K   recycled 2M\n");
   for (int r = 0; r < rounds; ++r) {
     double fresh[2], recycled[2];
     for (const bool huge : {false, true}) {
@@ -58,7 +58,7 @@ int main(int argc, char** argv) {
       fresh[huge] = touch(mb, huge);
       recycled[huge] = touch(mb, huge);
     }
-    std::printf("round %d%36.2f%11.2f%15.2f%14.2f\n", r + 1, fresh[0], fresh[1], recycled[0],
+    std::printf("%5d%11.2f%11.2f%14.2f%14.2f\n", r + 1, fresh[0], fresh[1], recycled[0],
                 recycled[1]);
   }
 }
