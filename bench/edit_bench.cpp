@@ -30,7 +30,6 @@
 //    (a worst case: the merged loop bounds a band all round the torus).
 // Commands and figures: bench/RESULTS.md.
 #include <benchmark/benchmark.h>
-#include <sys/resource.h>
 
 #include <algorithm>
 #include <chrono>
@@ -39,7 +38,6 @@
 #include <cstdio>
 #include <cstring>
 #include <ctime>
-#include <fstream>
 #include <functional>
 #include <limits>
 #include <map>
@@ -47,6 +45,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/process_measures.h"
 #include "core/design/propagate.h"
 #include "core/edit/deform_curve.h"
 #include "core/edit/reconnect_curves.h"
@@ -65,34 +64,9 @@
 namespace {
 
 using namespace tfd::core;
+using tfd::bench::MemoryGrowth;
+using tfd::bench::peakMegabytes;
 namespace io = tfd::io;
-
-double peakMegabytes() {
-  std::ifstream status("/proc/self/status");
-  std::string line;
-  while (std::getline(status, line))
-    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024;
-  return 0;
-}
-
-/// The kernel's side of a cook: page faults (each a fresh page the kernel zeroes, and on this
-/// kind of virtual machine one the host may have to back again) and system time.
-struct MemoryGrowth {
-  double pageFaults = 0, systemSeconds = 0;
-  static MemoryGrowth now() {
-    rusage usage{};
-    getrusage(RUSAGE_SELF, &usage);
-    return {double(usage.ru_minflt + usage.ru_majflt),
-            double(usage.ru_stime.tv_sec) + 1e-6 * double(usage.ru_stime.tv_usec)};
-  }
-  MemoryGrowth operator-(const MemoryGrowth& o) const {
-    return {pageFaults - o.pageFaults, systemSeconds - o.systemSeconds};
-  }
-  MemoryGrowth& operator+=(const MemoryGrowth& o) {
-    pageFaults += o.pageFaults, systemSeconds += o.systemSeconds;
-    return *this;
-  }
-};
 
 /// FNV-1a over the bytes of the edited field, the region's tets and the curves' points: the
 /// label of a verified 1M result, so that two builds can be checked to give bit-for-bit the
