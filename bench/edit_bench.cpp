@@ -37,7 +37,6 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
-#include <ctime>
 #include <functional>
 #include <limits>
 #include <map>
@@ -64,7 +63,7 @@
 namespace {
 
 using namespace tfd::core;
-using tfd::bench::MemoryGrowth;
+using tfd::bench::CookCounters;
 using tfd::bench::peakMegabytes;
 namespace io = tfd::io;
 
@@ -104,7 +103,9 @@ void RemoveLoop1M(benchmark::State& state) {
   RemoveCurvesResult last{field, {}, {}, {}};
   bool verified = true;
   std::size_t failedRegion = 0;
+  CookCounters cooks;
   for (auto _ : state) {
+    const CookCounters::Cook cook(cooks);
     try {
       last = removeCurves(field, o);
     } catch (const RemovalFailed& e) {  // reported, not hidden: counted as verified = 0
@@ -114,6 +115,7 @@ void RemoveLoop1M(benchmark::State& state) {
       if (at != std::string::npos) failedRegion = std::stoul(m.substr(at + 12));
     }
   }
+  cooks.report(state);
   state.counters["verified"] = verified;
   if (verified) state.SetLabel(resultHash(last.field, last.regionTets, last.curves));
   if (!verified) state.counters["failed_region_tets"] = double(failedRegion);
@@ -151,7 +153,9 @@ void RemoveLoopBall1M(benchmark::State& state) {
   o.regionDistance = state.range(0) < 0 ? -1 : state.range(0) / 100.0;
   RemoveCurvesResult last{field, {}, {}, {}};
   bool verified = true;
+  CookCounters cooks;
   for (auto _ : state) {
+    const CookCounters::Cook cook(cooks);
     try {
       last = removeCurves(field, o);
     } catch (const RemovalFailed& e) {  // reported, not hidden: counted as verified = 0
@@ -159,6 +163,7 @@ void RemoveLoopBall1M(benchmark::State& state) {
       state.SetLabel(e.what());
     }
   }
+  cooks.report(state);
   state.counters["verified"] = verified;
   if (verified) state.SetLabel(resultHash(last.field, last.regionTets, last.curves));
   state.counters["tets"] = double(field.mesh().tetCount());
@@ -193,7 +198,9 @@ void DeformCurve1M(benchmark::State& state) {
   o.regionDistance = state.range(0) < 0 ? -1 : state.range(0) / 100.0;
   DeformCurveResult last{field, {}, {}, {}};
   bool verified = true;
+  CookCounters cooks;
   for (auto _ : state) {
+    const CookCounters::Cook cook(cooks);
     try {
       last = deformCurve(field, o);
     } catch (const DeformationFailed& e) {  // reported, not hidden
@@ -201,6 +208,7 @@ void DeformCurve1M(benchmark::State& state) {
       state.SetLabel(e.what());
     }
   }
+  cooks.report(state);
   state.counters["verified"] = verified;
   if (verified) state.SetLabel(resultHash(last.field, last.regionTets, last.curves));
   state.counters["tets"] = double(field.mesh().tetCount());
@@ -304,7 +312,9 @@ void ReconnectLines1M(benchmark::State& state) {
   o.regionDistance = state.range(0) < 0 ? -1 : state.range(0) / 100.0;
   ReconnectCurvesResult last{field, {}, {}, {}};
   bool verified = true;
+  CookCounters cooks;
   for (auto _ : state) {
+    const CookCounters::Cook cook(cooks);
     try {
       last = reconnectCurves(field, o);
     } catch (const ReconnectionFailed& e) {  // reported, not hidden
@@ -312,6 +322,7 @@ void ReconnectLines1M(benchmark::State& state) {
       state.SetLabel(e.what());
     }
   }
+  cooks.report(state);
   state.counters["verified"] = verified;
   if (verified) state.SetLabel(resultHash(last.field, last.regionTets, last.curves));
   state.counters["tets"] = double(field.mesh().tetCount());
@@ -813,23 +824,17 @@ void runTwoLoops(benchmark::State& state, const TensorField& field, std::vector<
   o.regionDistance = state.range(0) < 0 ? -1 : state.range(0) / 100.0;
   RemoveCurvesResult last{field, {}, {}, {}};
   bool verified = true;
-  double processCpu = 0;  // seconds, all threads: on a loaded machine a bound for a quiet one
-  MemoryGrowth growth;    // fresh pages: what a first cook pays the host for (RESULTS, session 11)
+  CookCounters cooks;  // fresh pages: what a first cook pays the host for (RESULTS, session 11)
   for (auto _ : state) {
-    const std::clock_t c0 = std::clock();
-    const MemoryGrowth before = MemoryGrowth::now();
+    const CookCounters::Cook cook(cooks);
     try {
       last = removeCurves(field, o);
     } catch (const RemovalFailed& e) {  // reported, not hidden
       verified = false;
       state.SetLabel(e.what());
     }
-    growth += MemoryGrowth::now() - before;
-    processCpu += double(std::clock() - c0) / CLOCKS_PER_SEC;
   }
-  state.counters["cpu_all_threads_s"] = processCpu;
-  state.counters["system_s"] = growth.systemSeconds;
-  state.counters["page_faults"] = growth.pageFaults;
+  cooks.report(state);
   if (verified)  // the report (both steps' regions and times) on stderr
     for (const std::string& line : last.report.lines())
       std::fprintf(stderr, "  %s\n", line.c_str());

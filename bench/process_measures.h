@@ -1,12 +1,19 @@
 #pragma once
-// What a benchmark reads off its own process: the peak resident memory and the kernel's side
-// of a run (page faults and system time). Header-only, for the benchmarks in bench/.
+// What a benchmark reads off its own process: the peak resident memory and, per timed cook,
+// the CPU time of all threads and the kernel's side (page faults and system time).
+// Header-only, for the benchmarks in bench/.
+#include <benchmark/benchmark.h>
 #include <sys/resource.h>
 
+#include <ctime>
 #include <fstream>
 #include <string>
 
 namespace tfd::bench {
+
+/// Resets the peak resident set size of the process (Linux: "5" > /proc/self/clear_refs), so
+/// that peakMegabytes() measures from here.
+inline void resetPeakMemory() { std::ofstream("/proc/self/clear_refs") << "5"; }
 
 /// Peak resident set size of the process in MB (VmHWM of /proc/self/status; 0 when unknown).
 inline double peakMegabytes() {
@@ -34,6 +41,39 @@ struct MemoryGrowth {
     pageFaults += o.pageFaults, systemSeconds += o.systemSeconds;
     return *this;
   }
+};
+
+/// Sums, over the cooks of a benchmark, the CPU time of all threads (on a loaded machine an
+/// upper bound for a quiet one's wall time) and the kernel's side. Each repetition's body
+/// holds a Cook for its duration; report() sets the counters cpu_all_threads_s, system_s and
+/// page_faults.
+class CookCounters {
+ public:
+  class Cook {
+   public:
+    explicit Cook(CookCounters& sum) : sum_(sum) {}
+    ~Cook() {
+      sum_.growth_ += MemoryGrowth::now() - growth_;
+      sum_.cpu_ += double(std::clock() - cpu_) / CLOCKS_PER_SEC;
+    }
+    Cook(const Cook&) = delete;
+    Cook& operator=(const Cook&) = delete;
+
+   private:
+    CookCounters& sum_;
+    const std::clock_t cpu_ = std::clock();
+    const MemoryGrowth growth_ = MemoryGrowth::now();
+  };
+
+  void report(benchmark::State& state) const {
+    state.counters["cpu_all_threads_s"] = cpu_;
+    state.counters["system_s"] = growth_.systemSeconds;
+    state.counters["page_faults"] = growth_.pageFaults;
+  }
+
+ private:
+  double cpu_ = 0;
+  MemoryGrowth growth_;
 };
 
 }  // namespace tfd::bench

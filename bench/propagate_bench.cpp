@@ -13,13 +13,13 @@
 
 #include <chrono>
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <string>
 #ifdef TFD_HAVE_CHOLMOD  // bench/CMakeLists.txt: only when libsuitesparse-dev is installed
 #include <Eigen/CholmodSupport>
 #endif
 
+#include "bench/process_measures.h"
 #include "core/design/apply_constraints.h"
 #include "core/design/boundary_conforming.h"
 #include "core/design/propagate.h"
@@ -33,13 +33,7 @@ namespace {
 
 using namespace tfd::core;
 
-double peakRssMegabytes() {
-  std::ifstream status("/proc/self/status");
-  std::string line;
-  while (std::getline(status, line))
-    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;
-  return 0;
-}
+using tfd::bench::peakMegabytes;
 
 /// CPU seconds of all threads of the process (independent of time slicing on a busy machine).
 double processCpuSeconds() {
@@ -113,7 +107,7 @@ void run(benchmark::State& state, const std::shared_ptr<const TetMesh>& mesh) {
   state.counters["cpu_s"] = cpu / std::max(runs, 1);  // all threads, mean per run
   state.counters["it1"] = best.firstIterations;
   state.counters["it2"] = best.secondIterations;
-  state.counters["peak_MB"] = peakRssMegabytes();
+  state.counters["peak_MB"] = peakMegabytes();
 }
 
 void BM_PropagateSphere(benchmark::State& state) {
@@ -220,7 +214,7 @@ void BM_PropagateSphereRecook(benchmark::State& state) {
   state.counters["assembly_s"] = best.assemblySeconds;
   setCookCounters(state, best, sum, cpu, runs);
   state.counters["reused"] = best.reusedSetups;
-  state.counters["peak_MB"] = peakRssMegabytes();
+  state.counters["peak_MB"] = peakMegabytes();
 }
 
 BENCHMARK(BM_PropagateSphereRecook)

@@ -10,9 +10,9 @@
 
 #include <chrono>
 #include <ctime>
-#include <fstream>
 #include <string>
 
+#include "bench/process_measures.h"
 #include "core/surface/primitives.h"
 #include "io/tetgen/tetgen_mesher.h"
 
@@ -20,18 +20,8 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-/// Resets the peak resident set size of this process (Linux: "5" > /proc/self/clear_refs).
-void resetPeakMemory() { std::ofstream("/proc/self/clear_refs") << "5"; }
-
-/// Peak resident set size in MB since the last reset (VmHWM).
-double peakMemoryMb() {
-  std::ifstream status("/proc/self/status");
-  std::string line;
-  while (std::getline(status, line)) {
-    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;
-  }
-  return 0;
-}
+using tfd::bench::peakMegabytes;  // since the last resetPeakMemory()
+using tfd::bench::resetPeakMemory;
 
 void BM_TetgenSphere(benchmark::State& state) {
   const double target = double(state.range(0));
@@ -66,7 +56,7 @@ void BM_TetgenSphere(benchmark::State& state) {
     surfaceSeconds = std::chrono::duration<double>(t1 - t0).count();
     tetgenSeconds = std::chrono::duration<double>(tetgenDone - t1).count();
     topologySeconds = std::chrono::duration<double>(t2 - tetgenDone).count();
-    peak = peakMemoryMb();
+    peak = peakMegabytes();
     tets = mesh->tetCount();
     boundaryTriangles = surface.triangles.size();
     benchmark::DoNotOptimize(mesh);
