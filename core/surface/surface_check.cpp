@@ -217,6 +217,20 @@ double meanEdgeLength(const SurfaceMesh& mesh) {
   return count ? sum / double(count) : 0.0;
 }
 
+double medianEdgeLength(const SurfaceMesh& mesh) {
+  const auto h = halfEdges(mesh);
+  std::vector<double> lengths;
+  lengths.reserve(h.size() / 2 + 1);
+  for (std::size_t i = 0; i < h.size(); ++i) {
+    if (i > 0 && h[i].lo == h[i - 1].lo && h[i].hi == h[i - 1].hi) continue;
+    lengths.push_back((mesh.positions[h[i].lo] - mesh.positions[h[i].hi]).norm());
+  }
+  if (lengths.empty()) return 0;
+  const auto middle = lengths.begin() + (lengths.size() - 1) / 2;
+  std::nth_element(lengths.begin(), middle, lengths.end());
+  return *middle;
+}
+
 long eulerCharacteristic(const SurfaceMesh& mesh) {
   const auto h = halfEdges(mesh);
   long edges = 0;

@@ -1,8 +1,11 @@
 #include "core/surface/surface_weld.h"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <unordered_map>
 
 namespace tfd::core {
@@ -27,20 +30,9 @@ struct KeyHash {
   }
 };
 
-}  // namespace
-
-WeldReport weldCoincidentVertices(SurfaceMesh& mesh) {
+/// Replaces every vertex v by kept[newId[v]] and drops the triangles that lose a corner.
+WeldReport applyWeld(SurfaceMesh& mesh, std::vector<Vec3> kept, const std::vector<int>& newId) {
   WeldReport report;
-  std::unordered_map<Key, int, KeyHash> firstAt;
-  firstAt.reserve(mesh.positions.size());
-  std::vector<int> newId(mesh.positions.size());
-  std::vector<Vec3> kept;
-  kept.reserve(mesh.positions.size());
-  for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
-    const auto [it, inserted] = firstAt.emplace(keyOf(mesh.positions[v]), int(kept.size()));
-    if (inserted) kept.push_back(mesh.positions[v]);
-    newId[v] = it->second;
-  }
   report.mergedVertices = mesh.positions.size() - kept.size();
   if (report.mergedVertices == 0) return report;
   std::vector<std::array<int, 3>> triangles;
@@ -56,6 +48,120 @@ WeldReport weldCoincidentVertices(SurfaceMesh& mesh) {
   mesh.positions = std::move(kept);
   mesh.triangles = std::move(triangles);
   return report;
+}
+
+/// The hash-grid cell of p for cells of side `cell`, clamped far inside the int64 range.
+std::array<std::int64_t, 3> cellOf(const Vec3& p, double cell) {
+  std::array<std::int64_t, 3> c;
+  for (int i = 0; i < 3; ++i) c[i] = std::int64_t(std::clamp(std::floor(p[i] / cell), -4e18, 4e18));
+  return c;
+}
+
+struct CellHash {
+  std::size_t operator()(const std::array<std::int64_t, 3>& c) const {
+    std::uint64_t h = 1469598103934665603ull;
+    for (std::int64_t v : c) h = (h ^ std::uint64_t(v)) * 1099511628211ull;
+    return static_cast<std::size_t>(h);
+  }
+};
+
+}  // namespace
+
+WeldReport weldCoincidentVertices(SurfaceMesh& mesh) {
+  std::unordered_map<Key, int, KeyHash> firstAt;
+  firstAt.reserve(mesh.positions.size());
+  std::vector<int> newId(mesh.positions.size());
+  std::vector<Vec3> kept;
+  kept.reserve(mesh.positions.size());
+  for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+    const auto [it, inserted] = firstAt.emplace(keyOf(mesh.positions[v]), int(kept.size()));
+    if (inserted) kept.push_back(mesh.positions[v]);
+    newId[v] = it->second;
+  }
+  return applyWeld(mesh, std::move(kept), newId);
+}
+
+WeldReport weldCloseVertices(SurfaceMesh& mesh, double tolerance) {
+  WeldReport report = weldCoincidentVertices(mesh);
+  if (!(tolerance > 0) || !std::isfinite(tolerance)) return report;
+  // Kept vertices by grid cell (side `tolerance`): a vertex within `tolerance` of p lies in
+  // p's cell or one of its 26 neighbours. Each cell lists its kept vertices in order.
+  std::unordered_map<std::array<std::int64_t, 3>, std::vector<int>, CellHash> cells;
+  cells.reserve(mesh.positions.size());
+  std::vector<int> newId(mesh.positions.size());
+  std::vector<Vec3> kept;
+  kept.reserve(mesh.positions.size());
+  for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+    const Vec3& p = mesh.positions[v];
+    const auto c = cellOf(p, tolerance);
+    int into = std::numeric_limits<int>::max();
+    for (std::int64_t dx = -1; dx <= 1; ++dx)
+      for (std::int64_t dy = -1; dy <= 1; ++dy)
+        for (std::int64_t dz = -1; dz <= 1; ++dz) {
+          const auto it = cells.find({c[0] + dx, c[1] + dy, c[2] + dz});
+          if (it == cells.end()) continue;
+          for (int k : it->second)
+            if (k < into && (kept[k] - p).norm() <= tolerance) into = k;
+        }
+    if (into == std::numeric_limits<int>::max()) {
+      into = int(kept.size());
+      kept.push_back(p);
+      cells[c].push_back(into);
+    }
+    newId[v] = into;
+  }
+  const WeldReport close = applyWeld(mesh, std::move(kept), newId);
+  report.mergedVertices += close.mergedVertices;
+  report.droppedTriangles += close.droppedTriangles;
+  return report;
+}
+
+double openEdgeWeldDistance(const SurfaceMesh& mesh, double within) {
+  std::vector<std::uint64_t> sides;  // (lo, hi) of every triangle side
+  sides.reserve(3 * mesh.triangles.size());
+  for (const auto& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const auto [lo, hi] = std::minmax(t[k], t[(k + 1) % 3]);
+      sides.push_back(std::uint64_t(std::uint32_t(lo)) << 32 | std::uint32_t(hi));
+    }
+  std::sort(sides.begin(), sides.end());
+  std::vector<std::array<int, 2>> open;
+  for (std::size_t i = 0, j; i < sides.size(); i = j) {
+    for (j = i + 1; j < sides.size() && sides[j] == sides[i]; ++j) {
+    }
+    if (j - i == 1) open.push_back({int(sides[i] >> 32), int(sides[i] & 0xffffffffu)});
+  }
+  if (open.empty()) return 0;
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  if (!(within > 0) || !std::isfinite(within)) return kInf;
+  // Open edges by the grid cell (side `within`) of each end.
+  std::unordered_map<std::array<std::int64_t, 3>, std::vector<int>, CellHash> byCell;
+  for (int e = 0; e < int(open.size()); ++e)
+    for (int v : open[e]) byCell[cellOf(mesh.positions[v], within)].push_back(e);
+  auto gap = [&](int a, int b) { return (mesh.positions[a] - mesh.positions[b]).norm(); };
+  // Each open edge's nearest twin: another open edge whose ends lie within `within` of its
+  // own, matched end to end (a shared end is 0 away); the edge's gap is the farther end.
+  double widest = 0;
+  for (int e = 0; e < int(open.size()); ++e) {
+    const auto [a, b] = open[e];
+    const auto c = cellOf(mesh.positions[a], within);
+    double nearest = kInf;
+    for (std::int64_t dx = -1; dx <= 1; ++dx)
+      for (std::int64_t dy = -1; dy <= 1; ++dy)
+        for (std::int64_t dz = -1; dz <= 1; ++dz) {
+          const auto it = byCell.find({c[0] + dx, c[1] + dy, c[2] + dz});
+          if (it == byCell.end()) continue;
+          for (int f : it->second) {
+            if (f == e) continue;
+            const auto [p, q] = open[f];
+            nearest =
+                std::min({nearest, std::max(gap(a, p), gap(b, q)), std::max(gap(a, q), gap(b, p))});
+          }
+        }
+    if (!(nearest <= within)) return kInf;
+    widest = std::max(widest, nearest);
+  }
+  return widest;
 }
 
 }  // namespace tfd::core

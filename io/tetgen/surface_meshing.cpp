@@ -1,6 +1,8 @@
 #include "io/tetgen/surface_meshing.h"
 
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 #include "core/surface/primitives.h"
 #include "core/surface/surface_check.h"
@@ -8,6 +10,23 @@
 #include "io/tetgen/tetgen_mesher.h"
 
 namespace tfd::io {
+namespace {
+
+/// When every open edge of a surface has a twin close by (a seam written a little apart), the
+/// weld tolerance that would pair them, as advice; else "".
+std::string weldHint(const core::SurfaceMesh& surface, double used) {
+  const double edge = core::medianEdgeLength(surface);
+  const double gap = core::openEdgeWeldDistance(surface, 0.1 * edge);
+  if (!(gap > used) || !(gap <= 0.1 * edge)) return "";
+  char text[200];
+  std::snprintf(text, sizeof text,
+                ". Every open edge has a twin within %.3g (%.3g of the median edge): if these "
+                "are seams written a little apart, a weld_tolerance above %.3g welds them",
+                gap, gap / edge, gap / edge);
+  return text;
+}
+
+}  // namespace
 
 std::shared_ptr<const core::TetMesh> meshSurface(core::SurfaceMesh surface,
                                                  const SurfaceMeshingRequest& request,
@@ -15,11 +34,18 @@ std::shared_ptr<const core::TetMesh> meshSurface(core::SurfaceMesh surface,
                                                  const core::Progress& progress) {
   SurfaceMeshingReport r;
   if (!request.procedural) {
-    const core::WeldReport weld = core::weldCoincidentVertices(surface);
+    if (!(request.weldTolerance >= 0) || !std::isfinite(request.weldTolerance))
+      throw core::Error("the weld tolerance must be a finite number ≥ 0");
+    r.weldDistance = request.weldTolerance * core::medianEdgeLength(surface);
+    const core::WeldReport weld = core::weldCloseVertices(surface, r.weldDistance);
     r.weldedVertices = weld.mergedVertices;
     r.droppedTriangles = weld.droppedTriangles;
     // Before anything uses its volume: an open or flat surface is named as such.
-    requireClosedSurface(surface, request.source.empty() ? "the surface" : request.source);
+    try {
+      requireClosedSurface(surface, request.source.empty() ? "the surface" : request.source);
+    } catch (const core::Error& e) {
+      throw core::Error(std::string(e.what()) + weldHint(surface, r.weldDistance));
+    }
   }
   TetgenOptions o;
   o.targetTets = request.targetTets;

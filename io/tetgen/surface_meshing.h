@@ -22,11 +22,20 @@ inline constexpr double kKeepableEdgeRatio = 1.5;
 /// TetGen's volume-bound calibration without -Y (boundary refined too; see bench/RESULTS.md).
 inline constexpr double kRefineVolumeFactor = 2.5;
 
+/// The default weld tolerance, relative to the median edge length: far above the rounding of
+/// float32 files (6e-8 of a coordinate, so 6e-5 of an edge a thousandth of the model) and far
+/// below any edge TetGen could mesh well. The median, unlike the bounding box, does not grow
+/// with one outlying vertex.
+inline constexpr double kDefaultWeldTolerance = 1e-3;
+
 struct SurfaceMeshingRequest {
   double targetTets = 20'000;
   double quality = 1.414;  ///< TetGen radius-edge bound (0: no quality refinement)
   BoundaryMode boundary = BoundaryMode::Auto;
   double timeLimit = 0;  ///< seconds TetGen may run (TetgenOptions::timeLimit; 0: automatic)
+  /// Vertices closer than this fraction of the surface's median edge length are welded
+  /// (core::weldCloseVertices); 0: only those at exactly one position.
+  double weldTolerance = kDefaultWeldTolerance;
   /// A procedural solid (core/surface/primitives.h): its surface already matches the target, so
   /// auto keeps it, and it has no repeated vertices to weld.
   bool procedural = false;
@@ -34,7 +43,8 @@ struct SurfaceMeshingRequest {
 };
 
 struct SurfaceMeshingReport {
-  std::size_t weldedVertices = 0;    ///< vertices merged into an earlier one at the same place
+  std::size_t weldedVertices = 0;    ///< vertices merged into an earlier one (same place or close)
+  double weldDistance = 0;           ///< the absolute weld tolerance used (0: exact positions)
   std::size_t droppedTriangles = 0;  ///< triangles that lost a corner in the welding
   bool boundaryKept = true;          ///< the surface triangles are the mesh boundary
 };

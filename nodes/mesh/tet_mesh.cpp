@@ -1,5 +1,6 @@
 // TetMesh: the volume every field lives on, from a mesh file or a procedural solid
 // (paper §4 works on TetGen meshes).
+#include <iomanip>
 #include <sstream>
 
 #include "core/surface/primitives.h"
@@ -26,7 +27,8 @@ const graph::Choices<io::BoundaryMode> kBoundaryModes{{"auto", io::BoundaryMode:
 void declare(graph::NodeDecl& d) {
   d.doc(
        "A tetrahedral mesh: read from `file` (a tet mesh is used as is; a closed surface is "
-       "tetrahedralised by TetGen after welding vertices repeated at one position), or, when "
+       "tetrahedralised by TetGen after welding vertices at one position or within "
+       "`weld_tolerance`), or, when "
        "`file` is empty, a procedural solid "
        "tetrahedralised by TetGen.")
       .category("Mesh");
@@ -70,6 +72,14 @@ void declare(graph::NodeDecl& d) {
           "Seconds TetGen may run before it is stopped and the node fails; 0: automatic, "
           "30 s + 40 s per million target tets. (Some surfaces, e.g. with one vertex far "
           "away, keep TetGen's refinement from ending.)");
+  d.param<double>("weld_tolerance")
+      .byDefault(io::kDefaultWeldTolerance)
+      .min(0)
+      .max(0.5)
+      .doc(
+          "Surface files: vertices closer than this fraction of the median edge length are "
+          "welded into the first of them (seams that exporters write a rounding error apart); "
+          "0: only vertices at exactly one position.");
   d.param<std::string>("boundary")
       .choices(kBoundaryModes)
       .doc(
@@ -88,6 +98,7 @@ io::SurfaceMeshingRequest meshingRequest(const graph::CookContext& c, bool proce
     throw c.paramError("quality", "TetGen needs a radius-edge bound above 1.1 (or 0 for none)");
   r.boundary = c.param("boundary", kBoundaryModes);
   r.timeLimit = c.param<double>("time_limit");
+  r.weldTolerance = c.param<double>("weld_tolerance");
   r.procedural = procedural;
   r.source = std::move(source);
   return r;
@@ -105,6 +116,12 @@ core::PrimitiveSpec primitiveSpec(const graph::CookContext& c) {
       throw c.paramError("minor_radius", "the tube radius must be below major_radius");
   core::validatePrimitive(spec);
   return spec;
+}
+
+std::string numberText(double x) {
+  std::ostringstream s;
+  s << std::setprecision(3) << x;
+  return s.str();
 }
 
 std::string describe(const core::TetMesh& mesh) {
@@ -138,7 +155,9 @@ void cook(graph::CookContext& c) {
                            progress);
     if (report.weldedVertices > 0)
       c.info("welded " + std::to_string(report.weldedVertices) +
-             " vertices repeated at the same position" +
+             (report.weldDistance > 0 ? " vertices repeated at the same position or within " +
+                                            numberText(report.weldDistance) + " of another"
+                                      : std::string(" vertices repeated at the same position")) +
              (report.droppedTriangles > 0
                   ? ", dropped " + std::to_string(report.droppedTriangles) + " degenerate triangles"
                   : ""));

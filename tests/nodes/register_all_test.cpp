@@ -180,23 +180,28 @@ TEST(NodeTypes, VoxelExportsRefuseAVoxelSizeThatGivesTooManyVoxels) {
   EXPECT_TRUE(dir.entries().empty()) << "nothing written";
 }
 
-TEST(NodeTypes, TetMeshWeldsSeamsAndRefinesACoarseSurfaceToTheTargetCount) {
-  // A unit cube as a CAD tool might export it: 6 quads, every face with its own 4 vertices.
-  test::TempDir dir("node-types-cube");
+/// A unit cube as a CAD tool might export it: 6 quads, every face with its own 4 vertices,
+/// moved by `seam` × (face number) along x (0: the copies coincide exactly).
+void writeCubeOfSeparateFaces(const fs::path& file, double seam) {
   const double corners[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
                                 {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
-  {
-    const int quads[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
-                             {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
-    std::ofstream obj(dir.path() / "cube.obj");
-    int next = 1;
-    for (const auto& q : quads) {
-      for (int i : q)
-        obj << "v " << corners[i][0] << " " << corners[i][1] << " " << corners[i][2] << "\n";
-      obj << "f " << next << " " << next + 1 << " " << next + 2 << " " << next + 3 << "\n";
-      next += 4;
-    }
+  const int quads[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                           {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+  std::ofstream obj(file);
+  obj.precision(17);
+  int next = 1;
+  for (int f = 0; f < 6; ++f) {
+    for (int i : quads[f])
+      obj << "v " << corners[i][0] + seam * f << " " << corners[i][1] << " " << corners[i][2]
+          << "\n";
+    obj << "f " << next << " " << next + 1 << " " << next + 2 << " " << next + 3 << "\n";
+    next += 4;
   }
+}
+
+TEST(NodeTypes, TetMeshWeldsSeamsAndRefinesACoarseSurfaceToTheTargetCount) {
+  test::TempDir dir("node-types-cube");
+  writeCubeOfSeparateFaces(dir.path() / "cube.obj", 0);
   const graph::CookResult r = cookText(R"({
     "format": "tfd-graph", "formatVersion": 2,
     "nodes": {"m": {"type": "TetMesh", "typeVersion": 1,
@@ -212,6 +217,34 @@ TEST(NodeTypes, TetMeshWeldsSeamsAndRefinesACoarseSurfaceToTheTargetCount) {
   for (const auto& m : r.report("m")->messages) info += m.text + "\n";
   EXPECT_NE(info.find("welded 16 vertices"), std::string::npos) << info;
   EXPECT_NE(info.find("TetGen refines the boundary too"), std::string::npos) << info;
+}
+
+TEST(NodeTypes, TetMeshWeldsSeamsWrittenARoundingErrorApart) {
+  // The faces' copies of a corner up to 5e-9 apart: welded by default (a thousandth of the
+  // median edge, 1); with weld_tolerance 0 the cube is open, and the error says which
+  // tolerance would close it.
+  test::TempDir dir("node-types-seams");
+  writeCubeOfSeparateFaces(dir.path() / "cube.obj", 1e-9);
+  auto graph = [](const std::string& extra) {
+    return R"({"format": "tfd-graph", "formatVersion": 2,
+      "nodes": {"m": {"type": "TetMesh", "typeVersion": 1,
+                      "params": {"file": "cube.obj", "target_tets": 2000)" +
+           extra + R"(}}}, "links": []})";
+  };
+  const graph::CookResult welded = cookText(graph(""), dir.path());
+  ASSERT_TRUE(welded.ok()) << errorOf(welded, "m");
+  EXPECT_NEAR(welded.output<core::TetMesh>("m", "mesh")->totalVolume(), 1, 1e-8);
+  std::string info;
+  for (const auto& m : welded.report("m")->messages) info += m.text + "\n";
+  EXPECT_NE(info.find("welded 16 vertices repeated at the same position or within 0.001 of"),
+            std::string::npos)
+      << info;
+
+  const graph::CookResult open = cookText(graph(R"(, "weld_tolerance": 0.0)"), dir.path());
+  ASSERT_FALSE(open.ok());
+  const std::string error = errorOf(open, "m");
+  EXPECT_NE(error.find("the surface is not closed"), std::string::npos) << error;
+  EXPECT_NE(error.find("a weld_tolerance above 5e-09 welds them"), std::string::npos) << error;
 }
 
 }  // namespace
