@@ -6,6 +6,7 @@
 
 #include "core/surface/primitives.h"
 #include "core/surface/surface_check.h"
+#include "core/surface/surface_orient.h"
 #include "core/surface/surface_weld.h"
 #include "io/tetgen/tetgen_mesher.h"
 
@@ -40,11 +41,17 @@ std::shared_ptr<const core::TetMesh> meshSurface(core::SurfaceMesh surface,
     const core::WeldReport weld = core::weldCloseVertices(surface, r.weldDistance);
     r.weldedVertices = weld.mergedVertices;
     r.droppedTriangles = weld.droppedTriangles;
+    const core::OrientReport orient = core::orientConsistently(surface);
+    r.flippedTriangles = orient.flippedTriangles;
     // Before anything uses its volume: an open or flat surface is named as such.
     try {
       requireClosedSurface(surface, request.source.empty() ? "the surface" : request.source);
     } catch (const core::Error& e) {
-      throw core::Error(std::string(e.what()) + weldHint(surface, r.weldDistance));
+      throw core::Error(std::string(e.what()) +
+                        (orient.oneSided ? ". No reversal of triangles can orient it: the "
+                                           "surface is one-sided (a Klein bottle, a projective "
+                                           "plane), so it bounds no solid"
+                                         : weldHint(surface, r.weldDistance)));
     }
   }
   TetgenOptions o;

@@ -45,12 +45,14 @@ struct SurfaceMeshingRequest {
 struct SurfaceMeshingReport {
   std::size_t weldedVertices = 0;    ///< vertices merged into an earlier one (same place or close)
   double weldDistance = 0;           ///< the absolute weld tolerance used (0: exact positions)
+  std::size_t flippedTriangles = 0;  ///< reversed to agree with their neighbours
   std::size_t droppedTriangles = 0;  ///< triangles that lost a corner in the welding
   bool boundaryKept = true;          ///< the surface triangles are the mesh boundary
 };
 
-/// Welds (unless procedural), applies the boundary rule and tetrahedralises (tetrahedralize's
-/// errors and guarantees). `report` may be null.
+/// Welds and orients the triangles consistently (core::orientConsistently) unless procedural,
+/// applies the boundary rule and tetrahedralises (tetrahedralize's errors and guarantees).
+/// `report` may be null.
 std::shared_ptr<const core::TetMesh> meshSurface(core::SurfaceMesh surface,
                                                  const SurfaceMeshingRequest& request,
                                                  SurfaceMeshingReport* report,

@@ -28,9 +28,8 @@ void declare(graph::NodeDecl& d) {
   d.doc(
        "A tetrahedral mesh: read from `file` (a tet mesh is used as is; a closed surface is "
        "tetrahedralised by TetGen after welding vertices at one position or within "
-       "`weld_tolerance`), or, when "
-       "`file` is empty, a procedural solid "
-       "tetrahedralised by TetGen.")
+       "`weld_tolerance` and reversing triangles wound against their neighbours), or, when "
+       "`file` is empty, a procedural solid tetrahedralised by TetGen.")
       .category("Mesh");
   d.output<core::TetMesh>("mesh").doc("Positively oriented tets with their topology.");
   d.param<std::string>("file")
@@ -161,6 +160,9 @@ void cook(graph::CookContext& c) {
              (report.droppedTriangles > 0
                   ? ", dropped " + std::to_string(report.droppedTriangles) + " degenerate triangles"
                   : ""));
+    if (report.flippedTriangles > 0)
+      c.info("reversed " + std::to_string(report.flippedTriangles) +
+             " triangles to agree in orientation with their neighbours");
     if (!report.boundaryKept)
       c.info("surface coarser than target_tets needs: TetGen refines the boundary too");
   }

@@ -181,8 +181,9 @@ TEST(NodeTypes, VoxelExportsRefuseAVoxelSizeThatGivesTooManyVoxels) {
 }
 
 /// A unit cube as a CAD tool might export it: 6 quads, every face with its own 4 vertices,
-/// moved by `seam` × (face number) along x (0: the copies coincide exactly).
-void writeCubeOfSeparateFaces(const fs::path& file, double seam) {
+/// moved by `seam` × (face number) along x (0: the copies coincide exactly); face
+/// `reversedFace` (if any) wound the wrong way.
+void writeCubeOfSeparateFaces(const fs::path& file, double seam, int reversedFace = -1) {
   const double corners[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
                                 {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
   const int quads[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
@@ -194,7 +195,10 @@ void writeCubeOfSeparateFaces(const fs::path& file, double seam) {
     for (int i : quads[f])
       obj << "v " << corners[i][0] + seam * f << " " << corners[i][1] << " " << corners[i][2]
           << "\n";
-    obj << "f " << next << " " << next + 1 << " " << next + 2 << " " << next + 3 << "\n";
+    if (f == reversedFace)
+      obj << "f " << next + 3 << " " << next + 2 << " " << next + 1 << " " << next << "\n";
+    else
+      obj << "f " << next << " " << next + 1 << " " << next + 2 << " " << next + 3 << "\n";
     next += 4;
   }
 }
@@ -217,6 +221,20 @@ TEST(NodeTypes, TetMeshWeldsSeamsAndRefinesACoarseSurfaceToTheTargetCount) {
   for (const auto& m : r.report("m")->messages) info += m.text + "\n";
   EXPECT_NE(info.find("welded 16 vertices"), std::string::npos) << info;
   EXPECT_NE(info.find("TetGen refines the boundary too"), std::string::npos) << info;
+}
+
+TEST(NodeTypes, TetMeshReversesTrianglesWoundAgainstTheirNeighbours) {
+  test::TempDir dir("node-types-wound");
+  writeCubeOfSeparateFaces(dir.path() / "cube.obj", 0, 3);
+  const graph::CookResult r = cookText(R"({"format": "tfd-graph", "formatVersion": 2,
+      "nodes": {"m": {"type": "TetMesh", "typeVersion": 1,
+                      "params": {"file": "cube.obj", "target_tets": 2000}}}, "links": []})",
+                                       dir.path());
+  ASSERT_TRUE(r.ok()) << errorOf(r, "m");
+  EXPECT_NEAR(r.output<core::TetMesh>("m", "mesh")->totalVolume(), 1, 1e-9);
+  std::string info;
+  for (const auto& m : r.report("m")->messages) info += m.text + "\n";
+  EXPECT_NE(info.find("reversed 2 triangles to agree in orientation"), std::string::npos) << info;
 }
 
 TEST(NodeTypes, TetMeshWeldsSeamsWrittenARoundingErrorApart) {
