@@ -15,6 +15,7 @@
 #include "core/error.h"
 #include "core/memory_budget.h"
 #include "core/spatial_order.h"
+#include "core/surface/surface_cavities.h"
 #include "core/surface/surface_check.h"
 #include "io/tet_mesh_build.h"
 #include "io/tetgen/tetgen_process.h"
@@ -142,6 +143,14 @@ std::shared_ptr<const core::TetMesh> tetrahedralize(const core::SurfaceMesh& inp
     f.polygonlist[0].vertexlist = new int[3];
     for (int i = 0; i < 3; ++i) f.polygonlist[0].vertexlist[i] = surface.triangles[t][i];
   }
+
+  // Pieces of the surface that face the other way bound voids: a hole point in each, or TetGen
+  // fills them (it removes only the tets outside the outer boundary by itself).
+  const std::vector<core::Vec3> cavities = core::cavityPoints(surface);
+  in.numberofholes = int(cavities.size());
+  in.holelist = cavities.empty() ? nullptr : new REAL[3 * cavities.size()];
+  for (std::size_t h = 0; h < cavities.size(); ++h)
+    for (int i = 0; i < 3; ++i) in.holelist[3 * h + i] = cavities[h][i];
 
   const double expected = options.targetTets > 0 ? options.targetTets : 1000.0 * in.numberofpoints;
   core::checkMemory(

@@ -125,6 +125,25 @@ TEST(Tetgen, EitherSurfaceOrientationWorks) {
   EXPECT_NEAR(mesh->totalVolume(), -core::enclosedVolume(surface), 1e-9);
 }
 
+TEST(Tetgen, ShellsFacingInwardBoundVoidsThatStayEmpty) {
+  // A hollow ball holding a smaller ball in its void: outward, inward, outward shells. TetGen
+  // alone fills the void; its hole point keeps it empty, and the inner ball stays solid.
+  SurfaceMesh surface;
+  for (const auto& [radius, outward] : {std::pair{1.0, true}, {0.6, false}, {0.3, true}}) {
+    SurfaceMesh s = core::makeSphere(radius, 0.15);
+    if (!outward) core::flipOrientation(s);
+    const int base = int(surface.positions.size());
+    surface.positions.insert(surface.positions.end(), s.positions.begin(), s.positions.end());
+    for (const auto& t : s.triangles)
+      surface.triangles.push_back({base + t[0], base + t[1], base + t[2]});
+  }
+  const auto mesh = tetrahedralize(surface, {.targetTets = 20'000});
+  for (double v : mesh->tetVolumes()) ASSERT_GT(v, 0);
+  EXPECT_NEAR(mesh->totalVolume(), core::enclosedVolume(surface), 1e-9)
+      << "the outer ball less the void plus the ball inside it";
+  EXPECT_EQ(mesh->boundaryFaces().size(), surface.triangles.size()) << "every shell is boundary";
+}
+
 TEST(Tetgen, WithoutKeepBoundaryTheSurfaceIsRefined) {
   const SurfaceMesh surface = core::makeBox(Vec3(1, 1, 1), 1.0);  // 12 triangles
   const auto mesh = tetrahedralize(surface, {.targetTets = 3'000, .keepBoundary = false});

@@ -1,0 +1,60 @@
+#include "core/surface/surface_cavities.h"
+
+#include <cmath>
+#include <numeric>
+
+namespace tfd::core {
+namespace {
+
+int findRoot(std::vector<int>& parent, int i) {
+  while (parent[i] != i) i = parent[i] = parent[parent[i]];
+  return i;
+}
+
+struct Piece {
+  double volume = 0;  ///< signed, from its first vertex (translation-free)
+  int origin = -1;    ///< that vertex
+  int largest = -1;   ///< its triangle of largest area
+  double area = -1;   ///< of that triangle
+};
+
+}  // namespace
+
+std::vector<Vec3> cavityPoints(const SurfaceMesh& mesh) {
+  const auto& p = mesh.positions;
+  std::vector<int> parent(p.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  for (const auto& t : mesh.triangles)
+    for (int k = 1; k < 3; ++k) parent[findRoot(parent, t[k])] = findRoot(parent, t[0]);
+  std::vector<int> pieceOf(p.size(), -1);
+  std::vector<Piece> pieces;
+  for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+    const auto& t = mesh.triangles[i];
+    const int root = findRoot(parent, t[0]);
+    if (pieceOf[root] < 0) {
+      pieceOf[root] = int(pieces.size());
+      pieces.push_back({0, t[0], -1, -1});
+    }
+    Piece& piece = pieces[pieceOf[root]];
+    const Vec3 &o = p[piece.origin], a = p[t[0]] - o, b = p[t[1]] - o, c = p[t[2]] - o;
+    piece.volume += a.dot(b.cross(c)) / 6;
+    const double area = 0.5 * (b - a).cross(c - a).norm();
+    if (area > piece.area) piece.area = area, piece.largest = int(i);
+  }
+  if (pieces.size() < 2) return {};
+  const Piece* outer = &pieces.front();
+  for (const Piece& piece : pieces)
+    if (std::abs(piece.volume) > std::abs(outer->volume)) outer = &piece;
+  const double side = outer->volume > 0 ? 1.0 : -1.0;  // along the normals: out of the material
+  std::vector<Vec3> points;
+  for (const Piece& piece : pieces) {
+    if (!(piece.volume * side < 0) || !(piece.area > 0)) continue;
+    const auto& t = mesh.triangles[piece.largest];
+    const Vec3 normal = (p[t[1]] - p[t[0]]).cross(p[t[2]] - p[t[0]]).normalized();
+    const Vec3 centroid = (p[t[0]] + p[t[1]] + p[t[2]]) / 3;
+    points.push_back(centroid + side * 1e-3 * std::sqrt(piece.area) * normal);
+  }
+  return points;
+}
+
+}  // namespace tfd::core
