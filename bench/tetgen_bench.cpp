@@ -3,6 +3,8 @@
 // build time (the constructor: validation, edges, faces, boundary, incidence, volumes), each
 // as wall-clock and as process CPU time (std::clock, all threads: robust on a busy machine),
 // and the peak resident memory of the run (VmHWM, reset before each size).
+// BM_SurfacePreparation: what TetMesh does to a surface file before TetGen (weld, orient,
+// check, find voids) on a sphere of ~1M triangles read as a soup (every corner repeated).
 // Run: build-<dir>/bench/tetgen_bench --benchmark_counters_tabular=true
 // Results and machine notes: bench/RESULTS.md.
 #include <benchmark/benchmark.h>
@@ -14,6 +16,10 @@
 
 #include "bench/process_measures.h"
 #include "core/surface/primitives.h"
+#include "core/surface/surface_cavities.h"
+#include "core/surface/surface_check.h"
+#include "core/surface/surface_orient.h"
+#include "core/surface/surface_weld.h"
 #include "io/tetgen/tetgen_mesher.h"
 
 namespace {
@@ -121,6 +127,39 @@ void BM_TetMeshRestore(benchmark::State& state) {
   state.counters["tets"] = double(sphere->tetCount());
 }
 
+void BM_SurfacePreparation(benchmark::State& state) {
+  using namespace tfd::core;
+  const SurfaceMesh sphere = makeSphere(1.0, 0.0054);  // ~1M triangles
+  SurfaceMesh soup;
+  for (const auto& t : sphere.triangles) {
+    const int first = int(soup.positions.size());
+    for (int v : t) soup.positions.push_back(sphere.positions[v]);
+    soup.triangles.push_back({first, first + 1, first + 2});
+  }
+  double weldS = 0, orientS = 0, checkS = 0;
+  for (auto _ : state) {
+    SurfaceMesh s = soup;
+    auto t0 = Clock::now();
+    weldCloseVertices(s, 1e-3 * medianEdgeLength(s));
+    auto t1 = Clock::now();
+    orientConsistently(s);
+    auto t2 = Clock::now();
+    benchmark::DoNotOptimize(closedSurfaceProblems(s));
+    benchmark::DoNotOptimize(cavityPoints(s));
+    auto t3 = Clock::now();
+    weldS += std::chrono::duration<double>(t1 - t0).count();
+    orientS += std::chrono::duration<double>(t2 - t1).count();
+    checkS += std::chrono::duration<double>(t3 - t2).count();
+    if (s.positions.size() != sphere.positions.size()) state.SkipWithError("weld missed corners");
+  }
+  const double n = double(state.iterations());
+  state.counters["triangles"] = double(soup.triangles.size());
+  state.counters["weld_ms"] = 1e3 * weldS / n;
+  state.counters["orient_ms"] = 1e3 * orientS / n;
+  state.counters["check_ms"] = 1e3 * checkS / n;
+}
+
+BENCHMARK(BM_SurfacePreparation)->Iterations(3)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_TetMeshRestore)
     ->Arg(1)
     ->Arg(2)

@@ -218,13 +218,11 @@ double meanEdgeLength(const SurfaceMesh& mesh) {
 }
 
 double medianEdgeLength(const SurfaceMesh& mesh) {
-  const auto h = halfEdges(mesh);
   std::vector<double> lengths;
-  lengths.reserve(h.size() / 2 + 1);
-  for (std::size_t i = 0; i < h.size(); ++i) {
-    if (i > 0 && h[i].lo == h[i - 1].lo && h[i].hi == h[i - 1].hi) continue;
-    lengths.push_back((mesh.positions[h[i].lo] - mesh.positions[h[i].hi]).norm());
-  }
+  lengths.reserve(3 * mesh.triangles.size());
+  for (const auto& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k)
+      lengths.push_back((mesh.positions[t[k]] - mesh.positions[t[(k + 1) % 3]]).norm());
   if (lengths.empty()) return 0;
   const auto middle = lengths.begin() + (lengths.size() - 1) / 2;
   std::nth_element(lengths.begin(), middle, lengths.end());

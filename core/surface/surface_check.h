@@ -27,8 +27,8 @@ double surfaceArea(const SurfaceMesh& mesh);
 /// Mean length of the unique edges.
 double meanEdgeLength(const SurfaceMesh& mesh);
 
-/// Lower median length of the unique edges (0 for none): a scale that a few outlying vertices
-/// or slivers do not move.
+/// Lower median length of the triangles' sides (an edge of two triangles counts twice; 0 for
+/// none): a scale that a few outlying vertices or slivers do not move.
 double medianEdgeLength(const SurfaceMesh& mesh);
 
 /// Euler characteristic V − E + F counting only referenced vertices (2 − 2·genus per closed

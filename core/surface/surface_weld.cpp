@@ -50,19 +50,57 @@ WeldReport applyWeld(SurfaceMesh& mesh, std::vector<Vec3> kept, const std::vecto
   return report;
 }
 
-/// The hash-grid cell of p for cells of side `cell`, clamped far inside the int64 range.
-std::array<std::int64_t, 3> cellOf(const Vec3& p, double cell) {
-  std::array<std::int64_t, 3> c;
+using Cell = std::array<std::int64_t, 3>;
+
+/// The grid cell of p for cells of side `cell`, clamped far inside the int64 range.
+Cell cellOf(const Vec3& p, double cell) {
+  Cell c;
   for (int i = 0; i < 3; ++i) c[i] = std::int64_t(std::clamp(std::floor(p[i] / cell), -4e18, 4e18));
   return c;
 }
 
 struct CellHash {
-  std::size_t operator()(const std::array<std::int64_t, 3>& c) const {
+  std::size_t operator()(const Cell& c) const {
     std::uint64_t h = 1469598103934665603ull;
     for (std::int64_t v : c) h = (h ^ std::uint64_t(v)) * 1099511628211ull;
-    return static_cast<std::size_t>(h);
+    return static_cast<std::size_t>(h ^ (h >> 31));
   }
+};
+
+/// Items 0, 1, 2, ... filed once each by grid cell: an open-addressing table from a cell to the
+/// item filed last in it, and from each item to the one filed before it in its cell (one
+/// allocation, where a map of lists makes one per cell).
+class CellTable {
+ public:
+  explicit CellTable(std::size_t items) : before_(items, -1) {
+    std::size_t size = 16;
+    while (size < 2 * items) size *= 2;
+    slots_.assign(size, Slot{});
+  }
+  void file(const Cell& c, int item) {
+    Slot& s = slots_[find(c)];
+    s.cell = c;
+    before_[item] = s.last;
+    s.last = item;
+  }
+  template <class Visit>
+  void forEach(const Cell& c, Visit&& visit) const {
+    for (int i = slots_[find(c)].last; i >= 0; i = before_[i]) visit(i);
+  }
+
+ private:
+  struct Slot {
+    Cell cell{};
+    int last = -1;  ///< −1: empty
+  };
+  /// The slot of cell c, or the empty one where it would go.
+  std::size_t find(const Cell& c) const {
+    const std::size_t mask = slots_.size() - 1;
+    for (std::size_t i = CellHash{}(c)&mask;; i = (i + 1) & mask)
+      if (slots_[i].last < 0 || slots_[i].cell == c) return i;
+  }
+  std::vector<Slot> slots_;
+  std::vector<int> before_;
 };
 
 }  // namespace
@@ -82,38 +120,32 @@ WeldReport weldCoincidentVertices(SurfaceMesh& mesh) {
 }
 
 WeldReport weldCloseVertices(SurfaceMesh& mesh, double tolerance) {
-  WeldReport report = weldCoincidentVertices(mesh);
-  if (!(tolerance > 0) || !std::isfinite(tolerance)) return report;
-  // Kept vertices by grid cell (side `tolerance`): a vertex within `tolerance` of p lies in
-  // p's cell or one of its 26 neighbours. Each cell lists its kept vertices in order.
-  std::unordered_map<std::array<std::int64_t, 3>, std::vector<int>, CellHash> cells;
-  cells.reserve(mesh.positions.size());
+  if (!(tolerance > 0) || !std::isfinite(tolerance)) return weldCoincidentVertices(mesh);
+  // Kept vertices filed by grid cell of side 2·tolerance: the points within `tolerance` of p
+  // lie in the 2 × 2 × 2 cells that the cube [p − tolerance, p + tolerance]³ overlaps.
+  const double side = 2 * tolerance;
+  CellTable cells(mesh.positions.size());
   std::vector<int> newId(mesh.positions.size());
   std::vector<Vec3> kept;
   kept.reserve(mesh.positions.size());
   for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
     const Vec3& p = mesh.positions[v];
-    const auto c = cellOf(p, tolerance);
+    const Cell low = cellOf(p - Vec3::Constant(tolerance), side);
     int into = std::numeric_limits<int>::max();
-    for (std::int64_t dx = -1; dx <= 1; ++dx)
-      for (std::int64_t dy = -1; dy <= 1; ++dy)
-        for (std::int64_t dz = -1; dz <= 1; ++dz) {
-          const auto it = cells.find({c[0] + dx, c[1] + dy, c[2] + dz});
-          if (it == cells.end()) continue;
-          for (int k : it->second)
-            if (k < into && (kept[k] - p).norm() <= tolerance) into = k;
-        }
+    for (int corner = 0; corner < 8; ++corner) {
+      const Cell c{low[0] + (corner & 1), low[1] + (corner >> 1 & 1), low[2] + (corner >> 2)};
+      cells.forEach(c, [&](int k) {
+        if (k < into && (kept[k] - p).norm() <= tolerance) into = k;
+      });
+    }
     if (into == std::numeric_limits<int>::max()) {
       into = int(kept.size());
       kept.push_back(p);
-      cells[c].push_back(into);
+      cells.file(cellOf(p, side), into);
     }
     newId[v] = into;
   }
-  const WeldReport close = applyWeld(mesh, std::move(kept), newId);
-  report.mergedVertices += close.mergedVertices;
-  report.droppedTriangles += close.droppedTriangles;
-  return report;
+  return applyWeld(mesh, std::move(kept), newId);
 }
 
 double openEdgeWeldDistance(const SurfaceMesh& mesh, double within) {
@@ -135,7 +167,7 @@ double openEdgeWeldDistance(const SurfaceMesh& mesh, double within) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   if (!(within > 0) || !std::isfinite(within)) return kInf;
   // Open edges by the grid cell (side `within`) of each end.
-  std::unordered_map<std::array<std::int64_t, 3>, std::vector<int>, CellHash> byCell;
+  std::unordered_map<Cell, std::vector<int>, CellHash> byCell;
   for (int e = 0; e < int(open.size()); ++e)
     for (int v : open[e]) byCell[cellOf(mesh.positions[v], within)].push_back(e);
   auto gap = [&](int a, int b) { return (mesh.positions[a] - mesh.positions[b]).norm(); };
