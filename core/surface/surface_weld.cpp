@@ -148,6 +148,50 @@ WeldReport weldCloseVertices(SurfaceMesh& mesh, double tolerance) {
   return applyWeld(mesh, std::move(kept), newId);
 }
 
+std::size_t removeRepeatedTriangles(SurfaceMesh& mesh) {
+  // Triangles by their sorted corners; within a group, by position in the file.
+  const std::size_t n = mesh.triangles.size();
+  std::vector<std::pair<std::array<int, 3>, int>> keyed(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    std::array<int, 3> k = mesh.triangles[i];
+    std::sort(k.begin(), k.end());
+    keyed[i] = {k, int(i)};
+  }
+  std::sort(keyed.begin(), keyed.end());
+  // A triangle's facing: whether its corners are an even permutation of the sorted ones.
+  auto facing = [&](int i) {
+    const auto& t = mesh.triangles[i];
+    const int smallest = int(std::min_element(t.begin(), t.end()) - t.begin());
+    return t[(smallest + 1) % 3] < t[(smallest + 2) % 3];
+  };
+  std::vector<char> removed(n, 0);
+  std::size_t count = 0;
+  for (std::size_t i = 0, j; i < n; i = j) {
+    for (j = i + 1; j < n && keyed[j].first == keyed[i].first; ++j) {
+    }
+    if (j - i == 1) continue;
+    std::vector<int> up, down;  // in file order
+    for (std::size_t k = i; k < j; ++k)
+      (facing(keyed[k].second) ? up : down).push_back(keyed[k].second);
+    // Opposite pairs cancel (the last copies of each side first); one of the rest stays.
+    const std::size_t pairs = std::min(up.size(), down.size());
+    auto& rest = up.size() > down.size() ? up : down;
+    for (std::size_t k = 0; k < pairs; ++k)
+      removed[up[up.size() - 1 - k]] = removed[down[down.size() - 1 - k]] = 1;
+    for (std::size_t k = 1; k + pairs < rest.size(); ++k) removed[rest[k]] = 1;
+  }
+  std::vector<std::array<int, 3>> kept;
+  kept.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (removed[i])
+      ++count;
+    else
+      kept.push_back(mesh.triangles[i]);
+  }
+  mesh.triangles = std::move(kept);
+  return count;
+}
+
 double openEdgeWeldDistance(const SurfaceMesh& mesh, double within) {
   std::vector<std::uint64_t> sides;  // (lo, hi) of every triangle side
   sides.reserve(3 * mesh.triangles.size());

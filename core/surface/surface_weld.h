@@ -26,6 +26,13 @@ WeldReport weldCoincidentVertices(SurfaceMesh& mesh);
 /// tolerance ≤ 0: exact positions only. Cost: O(n) expected (a hash grid of cell `tolerance`).
 WeldReport weldCloseVertices(SurfaceMesh& mesh, double tolerance);
 
+/// Triangles on the same three vertices, as welding leaves them where a file repeats a face
+/// (a copy facing the same way) or where two solids meet in a shared face written once for
+/// each (two copies facing opposite ways, a wall of no thickness inside the union). Each
+/// opposite pair is removed, which joins the two solids; of copies facing the same way, the
+/// first stays. Returns how many triangles were removed; the others keep their order.
+std::size_t removeRepeatedTriangles(SurfaceMesh& mesh);
+
 /// For a surface with open edges (on one triangle only): the weld tolerance that gives every
 /// open edge a twin, i.e. the largest, over open edges, of the distance to the nearest other
 /// open edge matched end to end (the farther of its two ends; a shared end is 0 away).

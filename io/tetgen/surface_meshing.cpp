@@ -27,6 +27,37 @@ std::string weldHint(const core::SurfaceMesh& surface, double used) {
   return text;
 }
 
+/// A surface read from a file, made ready for TetGen: welded, its repeated triangles removed,
+/// its triangles oriented alike, then checked (closed, manifold, two-sided), with advice in
+/// the error where a weld tolerance or the surface's one-sidedness explains it.
+void prepareFileSurface(core::SurfaceMesh& surface, const SurfaceMeshingRequest& request,
+                        SurfaceMeshingReport& r) {
+  const std::string source = request.source.empty() ? "the surface" : request.source;
+  if (!(request.weldTolerance >= 0) || !std::isfinite(request.weldTolerance))
+    throw core::Error("the weld tolerance must be a finite number ≥ 0");
+  r.weldDistance = request.weldTolerance * core::medianEdgeLength(surface);
+  const core::WeldReport weld = core::weldCloseVertices(surface, r.weldDistance);
+  r.weldedVertices = weld.mergedVertices;
+  r.droppedTriangles = weld.droppedTriangles;
+  r.repeatedTriangles = core::removeRepeatedTriangles(surface);
+  if (surface.triangles.empty() && r.repeatedTriangles > 0)
+    throw core::Error(source +
+                      " encloses no volume: every triangle has a copy facing the other way "
+                      "(a flat or doubled surface)");
+  const core::OrientReport orient = core::orientConsistently(surface);
+  r.flippedTriangles = orient.flippedTriangles;
+  // Before anything uses its volume: an open or flat surface is named as such.
+  try {
+    requireClosedSurface(surface, source);
+  } catch (const core::Error& e) {
+    throw core::Error(std::string(e.what()) +
+                      (orient.oneSided ? ". No reversal of triangles can orient it: the surface "
+                                         "is one-sided (a Klein bottle, a projective plane), so "
+                                         "it bounds no solid"
+                                       : weldHint(surface, r.weldDistance)));
+  }
+}
+
 }  // namespace
 
 std::shared_ptr<const core::TetMesh> meshSurface(core::SurfaceMesh surface,
@@ -34,26 +65,7 @@ std::shared_ptr<const core::TetMesh> meshSurface(core::SurfaceMesh surface,
                                                  SurfaceMeshingReport* report,
                                                  const core::Progress& progress) {
   SurfaceMeshingReport r;
-  if (!request.procedural) {
-    if (!(request.weldTolerance >= 0) || !std::isfinite(request.weldTolerance))
-      throw core::Error("the weld tolerance must be a finite number ≥ 0");
-    r.weldDistance = request.weldTolerance * core::medianEdgeLength(surface);
-    const core::WeldReport weld = core::weldCloseVertices(surface, r.weldDistance);
-    r.weldedVertices = weld.mergedVertices;
-    r.droppedTriangles = weld.droppedTriangles;
-    const core::OrientReport orient = core::orientConsistently(surface);
-    r.flippedTriangles = orient.flippedTriangles;
-    // Before anything uses its volume: an open or flat surface is named as such.
-    try {
-      requireClosedSurface(surface, request.source.empty() ? "the surface" : request.source);
-    } catch (const core::Error& e) {
-      throw core::Error(std::string(e.what()) +
-                        (orient.oneSided ? ". No reversal of triangles can orient it: the "
-                                           "surface is one-sided (a Klein bottle, a projective "
-                                           "plane), so it bounds no solid"
-                                         : weldHint(surface, r.weldDistance)));
-    }
-  }
+  if (!request.procedural) prepareFileSurface(surface, request, r);
   TetgenOptions o;
   o.targetTets = request.targetTets;
   o.quality = request.quality;

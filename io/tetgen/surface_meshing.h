@@ -43,14 +43,16 @@ struct SurfaceMeshingRequest {
 };
 
 struct SurfaceMeshingReport {
-  std::size_t weldedVertices = 0;    ///< vertices merged into an earlier one (same place or close)
-  double weldDistance = 0;           ///< the absolute weld tolerance used (0: exact positions)
-  std::size_t flippedTriangles = 0;  ///< reversed to agree with their neighbours
-  std::size_t droppedTriangles = 0;  ///< triangles that lost a corner in the welding
-  bool boundaryKept = true;          ///< the surface triangles are the mesh boundary
+  std::size_t weldedVertices = 0;     ///< vertices merged into an earlier one (same place or close)
+  double weldDistance = 0;            ///< the absolute weld tolerance used (0: exact positions)
+  std::size_t repeatedTriangles = 0;  ///< removed: copies of a face, or a face between solids
+  std::size_t flippedTriangles = 0;   ///< reversed to agree with their neighbours
+  std::size_t droppedTriangles = 0;   ///< triangles that lost a corner in the welding
+  bool boundaryKept = true;           ///< the surface triangles are the mesh boundary
 };
 
-/// Welds and orients the triangles consistently (core::orientConsistently) unless procedural,
+/// Welds, removes repeated triangles (core::removeRepeatedTriangles) and orients the triangles
+/// consistently (core::orientConsistently) unless procedural,
 /// applies the boundary rule and tetrahedralises (tetrahedralize's errors and guarantees).
 /// `report` may be null.
 std::shared_ptr<const core::TetMesh> meshSurface(core::SurfaceMesh surface,

@@ -28,7 +28,8 @@ void declare(graph::NodeDecl& d) {
   d.doc(
        "A tetrahedral mesh: read from `file` (a tet mesh is used as is; a closed surface is "
        "tetrahedralised by TetGen after welding vertices at one position or within "
-       "`weld_tolerance` and reversing triangles wound against their neighbours), or, when "
+       "`weld_tolerance`, removing repeated triangles and reversing those wound against their "
+       "neighbours), or, when "
        "`file` is empty, a procedural solid tetrahedralised by TetGen.")
       .category("Mesh");
   d.output<core::TetMesh>("mesh").doc("Positively oriented tets with their topology.");
@@ -160,6 +161,9 @@ void cook(graph::CookContext& c) {
              (report.droppedTriangles > 0
                   ? ", dropped " + std::to_string(report.droppedTriangles) + " degenerate triangles"
                   : ""));
+    if (report.repeatedTriangles > 0)
+      c.info("removed " + std::to_string(report.repeatedTriangles) +
+             " repeated triangles (copies of a face, or faces shared by two solids)");
     if (report.flippedTriangles > 0)
       c.info("reversed " + std::to_string(report.flippedTriangles) +
              " triangles to agree in orientation with their neighbours");

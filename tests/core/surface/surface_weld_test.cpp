@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "core/surface/surface_check.h"
+
 #include <limits>
 
 namespace tfd::core {
@@ -83,6 +85,24 @@ TEST(SurfaceWeld, OpenEdgeWeldDistanceIsTheGapThatWouldCloseASeam) {
   SurfaceMesh open = closed;
   open.triangles.pop_back();  // a real hole: its rim's vertices are an edge length apart
   EXPECT_EQ(openEdgeWeldDistance(open, 1e-3), std::numeric_limits<double>::infinity());
+}
+
+TEST(SurfaceWeld, RepeatedTrianglesGoOppositePairsJoiningTwoSolids) {
+  // Two tetrahedra on either side of the face (0, 1, 2), each closed and outward: the shared
+  // face twice, facing opposite ways. A third copy of another face, facing the same way.
+  SurfaceMesh m;
+  m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0, 0, -1}};
+  m.triangles = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2},  // above the shared face
+                 {0, 1, 2}, {0, 4, 1}, {1, 4, 2}, {0, 2, 4},  // below it
+                 {3, 1, 2}};                                  // a copy of {1, 2, 3}
+  ASSERT_FALSE(closedSurfaceProblems(m).empty());
+  EXPECT_EQ(removeRepeatedTriangles(m), 3u);
+  const std::vector<std::array<int, 3>> expected{{0, 1, 3}, {1, 2, 3}, {0, 3, 2},
+                                                 {0, 4, 1}, {1, 4, 2}, {0, 2, 4}};
+  EXPECT_EQ(m.triangles, expected) << "the first copy of a face stays, in file order";
+  EXPECT_TRUE(closedSurfaceProblems(m).empty());
+  EXPECT_NEAR(enclosedVolume(m), 2.0 / 6.0, 1e-15) << "one solid, both tetrahedra";
+  EXPECT_EQ(removeRepeatedTriangles(m), 0u);
 }
 
 }  // namespace
