@@ -9,6 +9,10 @@
 #include <new>
 
 #include "core/memory_budget.h"
+#include "core/surface/surface_cavities.h"
+#include "core/surface/surface_check.h"
+#include "core/surface/surface_orient.h"
+#include "core/surface/surface_weld.h"
 
 namespace tfd::fuzz {
 
@@ -65,6 +69,19 @@ void checkSurface(const core::SurfaceMesh& mesh) {
   for (const auto& t : mesh.triangles)
     for (int v : t)
       if (v < 0 || v >= n) finding("a surface reader returned an out-of-range index");
+  // What TetMesh does with it before TetGen (io/tetgen/surface_meshing.cpp).
+  core::SurfaceMesh s = mesh;
+  core::weldCloseVertices(s, 1e-3 * core::medianEdgeLength(s));
+  core::removeRepeatedTriangles(s);
+  const std::size_t triangles = s.triangles.size();
+  core::orientConsistently(s);
+  if (s.triangles.size() != triangles) finding("orienting the triangles changed their number");
+  for (const auto& t : s.triangles)
+    for (int v : t)
+      if (v < 0 || v >= int(s.positions.size())) finding("welding left an out-of-range index");
+  if (core::closedSurfaceProblems(s).empty())
+    for (const core::Vec3& p : core::cavityPoints(s))
+      if (!p.allFinite()) finding("a void's point is not finite");
 }
 
 void checkTetMesh(const core::TetMesh& mesh) {

@@ -52,7 +52,8 @@ std::vector<Vec3> cavityPoints(const SurfaceMesh& mesh) {
     const auto& t = mesh.triangles[piece.largest];
     const Vec3 normal = (p[t[1]] - p[t[0]]).cross(p[t[2]] - p[t[0]]).normalized();
     const Vec3 centroid = (p[t[0]] + p[t[1]] + p[t[2]]) / 3;
-    points.push_back(centroid + side * 1e-3 * std::sqrt(piece.area) * normal);
+    const Vec3 point = centroid + side * 1e-3 * std::sqrt(piece.area) * normal;
+    if (point.allFinite()) points.push_back(point);  // not for coordinates near overflow
   }
   return points;
 }
