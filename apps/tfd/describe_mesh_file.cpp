@@ -9,8 +9,10 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/surface/surface_cavities.h"
 #include "core/surface/surface_check.h"
 #include "io/mesh_file.h"
+#include "io/tetgen/surface_meshing.h"
 
 namespace tfd::cli {
 namespace {
@@ -32,6 +34,40 @@ std::string eulerText(long euler, bool connected) {
     s += " (genus " + std::to_string((2 - euler) / 2) + ")";
   }
   return s;
+}
+
+std::string countText(std::size_t n, const std::string& one, const std::string& many) {
+  return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+/// What the TetMesh node, with its default parameters, does to a surface before TetGen: the
+/// repairs it makes, then the solid it gets or why it refuses the file.
+std::string tetMeshPreparation(core::SurfaceMesh s) {
+  io::SurfaceMeshingRequest request;
+  io::SurfaceMeshingReport report;
+  try {
+    io::prepareFileSurface(s, request, report);
+  } catch (const core::Error& e) {
+    return std::string("refuses it: ") + e.what();
+  }
+  std::vector<std::string> repairs;
+  if (report.weldedVertices > 0)
+    repairs.push_back("welds " + countText(report.weldedVertices, "vertex", "vertices") +
+                      " within " + number(report.weldDistance));
+  if (report.droppedTriangles > 0)
+    repairs.push_back("drops " + countText(report.droppedTriangles, "degenerate triangle",
+                                           "degenerate triangles"));
+  if (report.repeatedTriangles > 0)
+    repairs.push_back("removes " + countText(report.repeatedTriangles, "repeated triangle",
+                                             "repeated triangles"));
+  if (report.flippedTriangles > 0)
+    repairs.push_back("reverses " + countText(report.flippedTriangles, "triangle", "triangles"));
+  std::string text = repairs.empty() ? "uses it as it is" : "";
+  for (std::size_t i = 0; i < repairs.size(); ++i) text += (i ? ", " : "") + repairs[i];
+  text += "; solid volume " + number(std::abs(core::enclosedVolume(s)));
+  if (const std::size_t voids = core::cavityPoints(s).size(); voids > 0)
+    text += " with " + countText(voids, "void", "voids") + " kept empty";
+  return text;
 }
 
 }  // namespace
@@ -59,6 +95,7 @@ Rows describeMeshFile(const std::filesystem::path& path) {
     } else {
       rows.emplace_back("closed", "no: " + problems.front());
     }
+    rows.emplace_back("TetMesh node", tetMeshPreparation(s));
   } else if (io::isTetMeshFile(path)) {
     const auto m = io::readTetMesh(path);
     rows.emplace_back("format", io::meshFileFormat(path) + " (tet mesh)");

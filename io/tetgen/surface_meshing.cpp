@@ -27,9 +27,8 @@ std::string weldHint(const core::SurfaceMesh& surface, double used) {
   return text;
 }
 
-/// A surface read from a file, made ready for TetGen: welded, its repeated triangles removed,
-/// its triangles oriented alike, then checked (closed, manifold, two-sided), with advice in
-/// the error where a weld tolerance or the surface's one-sidedness explains it.
+}  // namespace
+
 void prepareFileSurface(core::SurfaceMesh& surface, const SurfaceMeshingRequest& request,
                         SurfaceMeshingReport& r) {
   const std::string source = request.source.empty() ? "the surface" : request.source;
@@ -57,8 +56,6 @@ void prepareFileSurface(core::SurfaceMesh& surface, const SurfaceMeshingRequest&
                                        : weldHint(surface, r.weldDistance)));
   }
 }
-
-}  // namespace
 
 std::shared_ptr<const core::TetMesh> meshSurface(core::SurfaceMesh surface,
                                                  const SurfaceMeshingRequest& request,

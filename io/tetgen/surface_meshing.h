@@ -51,6 +51,14 @@ struct SurfaceMeshingReport {
   bool boundaryKept = true;           ///< the surface triangles are the mesh boundary
 };
 
+/// A surface read from a file, made ready for TetGen as meshSurface() does: welded
+/// (request.weldTolerance), its repeated triangles removed (core::removeRepeatedTriangles), its
+/// triangles oriented alike (core::orientConsistently), then checked (closed, manifold,
+/// two-sided). Fills the weld, repeat and flip counts of `report`. Throws core::Error naming
+/// request.source, with advice where a weld tolerance or one-sidedness explains the problem.
+void prepareFileSurface(core::SurfaceMesh& surface, const SurfaceMeshingRequest& request,
+                        SurfaceMeshingReport& report);
+
 /// Welds, removes repeated triangles (core::removeRepeatedTriangles) and orients the triangles
 /// consistently (core::orientConsistently) unless procedural,
 /// applies the boundary rule and tetrahedralises (tetrahedralize's errors and guarantees).
