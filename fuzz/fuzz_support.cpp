@@ -11,6 +11,7 @@
 #include "core/memory_budget.h"
 #include "core/surface/surface_cavities.h"
 #include "core/surface/surface_check.h"
+#include "core/surface/surface_holes.h"
 #include "core/surface/surface_orient.h"
 #include "core/surface/surface_weld.h"
 
@@ -73,6 +74,7 @@ void checkSurface(const core::SurfaceMesh& mesh) {
   core::SurfaceMesh s = mesh;
   core::weldCloseVertices(s, 1e-3 * core::medianEdgeLength(s));
   core::removeRepeatedTriangles(s);
+  core::fillHoles(s, 64);
   const std::size_t triangles = s.triangles.size();
   core::orientConsistently(s);
   if (s.triangles.size() != triangles) finding("orienting the triangles changed their number");

@@ -6,6 +6,7 @@
 
 #include "core/surface/primitives.h"
 #include "core/surface/surface_check.h"
+#include "core/surface/surface_holes.h"
 #include "core/surface/surface_orient.h"
 #include "core/surface/surface_weld.h"
 #include "io/tetgen/tetgen_mesher.h"
@@ -27,6 +28,25 @@ std::string weldHint(const core::SurfaceMesh& surface, double used) {
   return text;
 }
 
+/// When the surface's only openings are holes (loops of open edges), how many and how long,
+/// and the fill_holes that closes them; else "".
+std::string holeHint(const core::SurfaceMesh& surface) {
+  const auto loops = core::holeLoops(surface);
+  if (loops.empty()) return "";
+  std::size_t shortest = loops.front().size(), longest = shortest;
+  for (const auto& loop : loops)
+    shortest = std::min(shortest, loop.size()), longest = std::max(longest, loop.size());
+  const std::string fill = "fill_holes ≥ " + std::to_string(longest);
+  if (loops.size() == 1)
+    return ". It has 1 hole (a loop of " + std::to_string(longest) + " open edges): " + fill +
+           " closes it with a fan of triangles";
+  const std::string sizes = shortest == longest
+                                ? std::to_string(longest)
+                                : std::to_string(shortest) + "–" + std::to_string(longest);
+  return ". It has " + std::to_string(loops.size()) + " holes (loops of " + sizes +
+         " open edges): " + fill + " closes them with a fan of triangles each";
+}
+
 }  // namespace
 
 void prepareFileSurface(core::SurfaceMesh& surface, const SurfaceMeshingRequest& request,
@@ -43,17 +63,24 @@ void prepareFileSurface(core::SurfaceMesh& surface, const SurfaceMeshingRequest&
     throw core::Error(source +
                       " encloses no volume: every triangle has a copy facing the other way "
                       "(a flat or doubled surface)");
+  if (request.fillHoles > 0) {
+    const core::HoleFilling filling = core::fillHoles(surface, std::size_t(request.fillHoles));
+    r.filledHoles = filling.filled;
+    r.holeTriangles = filling.triangles;
+  }
   const core::OrientReport orient = core::orientConsistently(surface);
   r.flippedTriangles = orient.flippedTriangles;
   // Before anything uses its volume: an open or flat surface is named as such.
   try {
     requireClosedSurface(surface, source);
   } catch (const core::Error& e) {
-    throw core::Error(std::string(e.what()) +
-                      (orient.oneSided ? ". No reversal of triangles can orient it: the surface "
-                                         "is one-sided (a Klein bottle, a projective plane), so "
-                                         "it bounds no solid"
-                                       : weldHint(surface, r.weldDistance)));
+    // Advice, most specific first (a seam's open edges are no holes to fill).
+    std::string advice = orient.oneSided ? ". No reversal of triangles can orient it: the "
+                                           "surface is one-sided (a Klein bottle, a projective "
+                                           "plane), so it bounds no solid"
+                                         : weldHint(surface, r.weldDistance);
+    if (advice.empty()) advice = holeHint(surface);
+    throw core::Error(std::string(e.what()) + advice);
   }
 }
 

@@ -36,6 +36,8 @@ struct SurfaceMeshingRequest {
   /// Vertices closer than this fraction of the surface's median edge length are welded
   /// (core::weldCloseVertices); 0: only those at exactly one position.
   double weldTolerance = kDefaultWeldTolerance;
+  /// Holes of at most this many edges are closed (core::fillHoles); 0: none.
+  int fillHoles = 0;
   /// A procedural solid (core/surface/primitives.h): its surface already matches the target, so
   /// auto keeps it, and it has no repeated vertices to weld.
   bool procedural = false;
@@ -46,6 +48,8 @@ struct SurfaceMeshingReport {
   std::size_t weldedVertices = 0;     ///< vertices merged into an earlier one (same place or close)
   double weldDistance = 0;            ///< the absolute weld tolerance used (0: exact positions)
   std::size_t repeatedTriangles = 0;  ///< removed: copies of a face, or a face between solids
+  std::size_t filledHoles = 0;        ///< holes closed with a fan
+  std::size_t holeTriangles = 0;      ///< triangles that closed them
   std::size_t flippedTriangles = 0;   ///< reversed to agree with their neighbours
   std::size_t droppedTriangles = 0;   ///< triangles that lost a corner in the welding
   bool boundaryKept = true;           ///< the surface triangles are the mesh boundary
@@ -53,9 +57,10 @@ struct SurfaceMeshingReport {
 
 /// A surface read from a file, made ready for TetGen as meshSurface() does: welded
 /// (request.weldTolerance), its repeated triangles removed (core::removeRepeatedTriangles), its
-/// triangles oriented alike (core::orientConsistently), then checked (closed, manifold,
-/// two-sided). Fills the weld, repeat and flip counts of `report`. Throws core::Error naming
-/// request.source, with advice where a weld tolerance or one-sidedness explains the problem.
+/// holes up to request.fillHoles edges closed (core::fillHoles), its triangles oriented alike
+/// (core::orientConsistently), then checked (closed, manifold, two-sided). Fills the weld, repeat
+/// and flip counts of `report`. Throws core::Error naming request.source, with advice where a weld
+/// tolerance or one-sidedness explains the problem.
 void prepareFileSurface(core::SurfaceMesh& surface, const SurfaceMeshingRequest& request,
                         SurfaceMeshingReport& report);
 

@@ -80,6 +80,14 @@ void declare(graph::NodeDecl& d) {
           "Surface files: vertices closer than this fraction of the median edge length are "
           "welded into the first of them (seams that exporters write a rounding error apart); "
           "0: only vertices at exactly one position.");
+  d.param<int>("fill_holes")
+      .byDefault(0)
+      .min(0)
+      .max(1000000)
+      .doc(
+          "Surface files: holes (loops of open edges, e.g. where a scanner saw nothing) of at "
+          "most this many edges are closed with a fan of triangles around a new vertex; 0: an "
+          "open surface is an error, which says how many holes it has and how long they are.");
   d.param<std::string>("boundary")
       .choices(kBoundaryModes)
       .doc(
@@ -99,6 +107,7 @@ io::SurfaceMeshingRequest meshingRequest(const graph::CookContext& c, bool proce
   r.boundary = c.param("boundary", kBoundaryModes);
   r.timeLimit = c.param<double>("time_limit");
   r.weldTolerance = c.param<double>("weld_tolerance");
+  r.fillHoles = c.param<int>("fill_holes");
   r.procedural = procedural;
   r.source = std::move(source);
   return r;
@@ -164,6 +173,10 @@ void cook(graph::CookContext& c) {
     if (report.repeatedTriangles > 0)
       c.info("removed " + std::to_string(report.repeatedTriangles) +
              " repeated triangles (copies of a face, or faces shared by two solids)");
+    if (report.filledHoles > 0)
+      c.info("closed " + std::to_string(report.filledHoles) + " hole" +
+             (report.filledHoles == 1 ? "" : "s") + " with " +
+             std::to_string(report.holeTriangles) + " triangles");
     if (report.flippedTriangles > 0)
       c.info("reversed " + std::to_string(report.flippedTriangles) +
              " triangles to agree in orientation with their neighbours");

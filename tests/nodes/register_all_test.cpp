@@ -237,6 +237,39 @@ TEST(NodeTypes, TetMeshReversesTrianglesWoundAgainstTheirNeighbours) {
   EXPECT_NE(info.find("reversed 2 triangles to agree in orientation"), std::string::npos) << info;
 }
 
+TEST(NodeTypes, TetMeshNamesTheHolesOfAnOpenSurfaceAndFillsThemWhenAsked) {
+  test::TempDir dir("node-types-holes");
+  writeCubeOfSeparateFaces(dir.path() / "cube.obj", 0);
+  {  // the top face (the second quad) left out
+    std::ifstream in(dir.path() / "cube.obj");
+    std::string text, line;
+    int faces = 0;
+    while (std::getline(in, line)) {
+      if (line.rfind("f ", 0) == 0 && ++faces == 2) continue;
+      text += line + "\n";
+    }
+    std::ofstream(dir.path() / "cube.obj") << text;
+  }
+  auto graph = [](const std::string& extra) {
+    return R"({"format": "tfd-graph", "formatVersion": 2,
+      "nodes": {"m": {"type": "TetMesh", "typeVersion": 1,
+                      "params": {"file": "cube.obj", "target_tets": 2000)" +
+           extra + R"(}}}, "links": []})";
+  };
+  const graph::CookResult open = cookText(graph(""), dir.path());
+  ASSERT_FALSE(open.ok());
+  const std::string error = errorOf(open, "m");
+  EXPECT_NE(error.find("It has 1 hole (a loop of 4 open edges): fill_holes ≥ 4 closes it"),
+            std::string::npos)
+      << error;
+  const graph::CookResult filled = cookText(graph(R"(, "fill_holes": 4)"), dir.path());
+  ASSERT_TRUE(filled.ok()) << errorOf(filled, "m");
+  EXPECT_NEAR(filled.output<core::TetMesh>("m", "mesh")->totalVolume(), 1, 1e-9);
+  std::string info;
+  for (const auto& m : filled.report("m")->messages) info += m.text + "\n";
+  EXPECT_NE(info.find("closed 1 hole with 4 triangles"), std::string::npos) << info;
+}
+
 TEST(NodeTypes, TetMeshWeldsSeamsWrittenARoundingErrorApart) {
   // The faces' copies of a corner up to 5e-9 apart: welded by default (a thousandth of the
   // median edge, 1); with weld_tolerance 0 the cube is open, and the error says which
