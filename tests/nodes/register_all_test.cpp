@@ -182,8 +182,9 @@ TEST(NodeTypes, VoxelExportsRefuseAVoxelSizeThatGivesTooManyVoxels) {
 
 /// A unit cube as a CAD tool might export it: 6 quads, every face with its own 4 vertices,
 /// moved by `seam` × (face number) along x (0: the copies coincide exactly); face
-/// `reversedFace` (if any) wound the wrong way.
-void writeCubeOfSeparateFaces(const fs::path& file, double seam, int reversedFace = -1) {
+/// `reversedFace` (if any) wound the wrong way, face `missingFace` (if any) left out.
+void writeCubeOfSeparateFaces(const fs::path& file, double seam, int reversedFace = -1,
+                              int missingFace = -1) {
   const double corners[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
                                 {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
   const int quads[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
@@ -195,7 +196,9 @@ void writeCubeOfSeparateFaces(const fs::path& file, double seam, int reversedFac
     for (int i : quads[f])
       obj << "v " << corners[i][0] + seam * f << " " << corners[i][1] << " " << corners[i][2]
           << "\n";
-    if (f == reversedFace)
+    if (f == missingFace) {
+      // its vertices only
+    } else if (f == reversedFace)
       obj << "f " << next + 3 << " " << next + 2 << " " << next + 1 << " " << next << "\n";
     else
       obj << "f " << next << " " << next + 1 << " " << next + 2 << " " << next + 3 << "\n";
@@ -203,22 +206,39 @@ void writeCubeOfSeparateFaces(const fs::path& file, double seam, int reversedFac
   }
 }
 
+/// A graph of one TetMesh node "m" meshing cube.obj, plus `extra` parameters (", ...").
+std::string cubeMeshGraph(const std::string& extra = "", int targetTets = 2000) {
+  return R"({"format": "tfd-graph", "formatVersion": 2,
+      "nodes": {"m": {"type": "TetMesh", "typeVersion": 1,
+                      "params": {"file": "cube.obj", "target_tets": )" +
+         std::to_string(targetTets) + extra + R"(}}}, "links": []})";
+}
+
+/// The info messages of node "m", one per line.
+std::string infoOfM(const graph::CookResult& r) {
+  std::string info;
+  for (const auto& m : r.report("m")->messages) info += m.text + "\n";
+  return info;
+}
+
+/// Node "m" meshed a unit cube and said `said` in its info.
+void expectUnitCubeSaying(const graph::CookResult& r, const std::string& said,
+                          double tolerance = 1e-9) {
+  ASSERT_TRUE(r.ok()) << errorOf(r, "m");
+  EXPECT_NEAR(r.output<core::TetMesh>("m", "mesh")->totalVolume(), 1, tolerance);
+  EXPECT_NE(infoOfM(r).find(said), std::string::npos) << infoOfM(r);
+}
+
 TEST(NodeTypes, TetMeshWeldsSeamsAndRefinesACoarseSurfaceToTheTargetCount) {
   test::TempDir dir("node-types-cube");
   writeCubeOfSeparateFaces(dir.path() / "cube.obj", 0);
-  const graph::CookResult r = cookText(R"({
-    "format": "tfd-graph", "formatVersion": 2,
-    "nodes": {"m": {"type": "TetMesh", "typeVersion": 1,
-                    "params": {"file": "cube.obj", "target_tets": 4000}}},
-    "links": []})",
-                                       dir.path());
+  const graph::CookResult r = cookText(cubeMeshGraph("", 4000), dir.path());
   ASSERT_TRUE(r.ok()) << errorOf(r, "m");
   const auto mesh = r.output<core::TetMesh>("m", "mesh");
   EXPECT_NEAR(mesh->totalVolume(), 1, 1e-9);
   EXPECT_GT(mesh->tetCount(), 2000u);
   EXPECT_LT(mesh->tetCount(), 8000u);
-  std::string info;
-  for (const auto& m : r.report("m")->messages) info += m.text + "\n";
+  const std::string info = infoOfM(r);
   EXPECT_NE(info.find("welded 16 vertices"), std::string::npos) << info;
   EXPECT_NE(info.find("TetGen refines the boundary too"), std::string::npos) << info;
 }
@@ -226,48 +246,21 @@ TEST(NodeTypes, TetMeshWeldsSeamsAndRefinesACoarseSurfaceToTheTargetCount) {
 TEST(NodeTypes, TetMeshReversesTrianglesWoundAgainstTheirNeighbours) {
   test::TempDir dir("node-types-wound");
   writeCubeOfSeparateFaces(dir.path() / "cube.obj", 0, 3);
-  const graph::CookResult r = cookText(R"({"format": "tfd-graph", "formatVersion": 2,
-      "nodes": {"m": {"type": "TetMesh", "typeVersion": 1,
-                      "params": {"file": "cube.obj", "target_tets": 2000}}}, "links": []})",
-                                       dir.path());
-  ASSERT_TRUE(r.ok()) << errorOf(r, "m");
-  EXPECT_NEAR(r.output<core::TetMesh>("m", "mesh")->totalVolume(), 1, 1e-9);
-  std::string info;
-  for (const auto& m : r.report("m")->messages) info += m.text + "\n";
-  EXPECT_NE(info.find("reversed 2 triangles to agree in orientation"), std::string::npos) << info;
+  expectUnitCubeSaying(cookText(cubeMeshGraph(), dir.path()),
+                       "reversed 2 triangles to agree in orientation");
 }
 
 TEST(NodeTypes, TetMeshNamesTheHolesOfAnOpenSurfaceAndFillsThemWhenAsked) {
   test::TempDir dir("node-types-holes");
-  writeCubeOfSeparateFaces(dir.path() / "cube.obj", 0);
-  {  // the top face (the second quad) left out
-    std::ifstream in(dir.path() / "cube.obj");
-    std::string text, line;
-    int faces = 0;
-    while (std::getline(in, line)) {
-      if (line.rfind("f ", 0) == 0 && ++faces == 2) continue;
-      text += line + "\n";
-    }
-    std::ofstream(dir.path() / "cube.obj") << text;
-  }
-  auto graph = [](const std::string& extra) {
-    return R"({"format": "tfd-graph", "formatVersion": 2,
-      "nodes": {"m": {"type": "TetMesh", "typeVersion": 1,
-                      "params": {"file": "cube.obj", "target_tets": 2000)" +
-           extra + R"(}}}, "links": []})";
-  };
-  const graph::CookResult open = cookText(graph(""), dir.path());
+  writeCubeOfSeparateFaces(dir.path() / "cube.obj", 0, -1, 1);  // no top
+  const graph::CookResult open = cookText(cubeMeshGraph(), dir.path());
   ASSERT_FALSE(open.ok());
   const std::string error = errorOf(open, "m");
   EXPECT_NE(error.find("It has 1 hole (a loop of 4 open edges): fill_holes ≥ 4 closes it"),
             std::string::npos)
       << error;
-  const graph::CookResult filled = cookText(graph(R"(, "fill_holes": 4)"), dir.path());
-  ASSERT_TRUE(filled.ok()) << errorOf(filled, "m");
-  EXPECT_NEAR(filled.output<core::TetMesh>("m", "mesh")->totalVolume(), 1, 1e-9);
-  std::string info;
-  for (const auto& m : filled.report("m")->messages) info += m.text + "\n";
-  EXPECT_NE(info.find("closed 1 hole with 4 triangles"), std::string::npos) << info;
+  expectUnitCubeSaying(cookText(cubeMeshGraph(R"(, "fill_holes": 4)"), dir.path()),
+                       "closed 1 hole with 4 triangles");
 }
 
 TEST(NodeTypes, TetMeshWeldsSeamsWrittenARoundingErrorApart) {
@@ -276,22 +269,10 @@ TEST(NodeTypes, TetMeshWeldsSeamsWrittenARoundingErrorApart) {
   // tolerance would close it.
   test::TempDir dir("node-types-seams");
   writeCubeOfSeparateFaces(dir.path() / "cube.obj", 1e-9);
-  auto graph = [](const std::string& extra) {
-    return R"({"format": "tfd-graph", "formatVersion": 2,
-      "nodes": {"m": {"type": "TetMesh", "typeVersion": 1,
-                      "params": {"file": "cube.obj", "target_tets": 2000)" +
-           extra + R"(}}}, "links": []})";
-  };
-  const graph::CookResult welded = cookText(graph(""), dir.path());
-  ASSERT_TRUE(welded.ok()) << errorOf(welded, "m");
-  EXPECT_NEAR(welded.output<core::TetMesh>("m", "mesh")->totalVolume(), 1, 1e-8);
-  std::string info;
-  for (const auto& m : welded.report("m")->messages) info += m.text + "\n";
-  EXPECT_NE(info.find("welded 16 vertices repeated at the same position or within 0.001 of"),
-            std::string::npos)
-      << info;
+  expectUnitCubeSaying(cookText(cubeMeshGraph(), dir.path()),
+                       "welded 16 vertices repeated at the same position or within 0.001 of", 1e-8);
 
-  const graph::CookResult open = cookText(graph(R"(, "weld_tolerance": 0.0)"), dir.path());
+  const graph::CookResult open = cookText(cubeMeshGraph(R"(, "weld_tolerance": 0.0)"), dir.path());
   ASSERT_FALSE(open.ok());
   const std::string error = errorOf(open, "m");
   EXPECT_NE(error.find("the surface is not closed"), std::string::npos) << error;
