@@ -1,15 +1,11 @@
 #include "core/surface/surface_cavities.h"
 
 #include <cmath>
-#include <numeric>
+
+#include "core/surface/surface_check.h"
 
 namespace tfd::core {
 namespace {
-
-int findRoot(std::vector<int>& parent, int i) {
-  while (parent[i] != i) i = parent[i] = parent[parent[i]];
-  return i;
-}
 
 struct Piece {
   double volume = 0;  ///< signed, from its first vertex (translation-free)
@@ -22,20 +18,12 @@ struct Piece {
 
 std::vector<Vec3> cavityPoints(const SurfaceMesh& mesh) {
   const auto& p = mesh.positions;
-  std::vector<int> parent(p.size());
-  std::iota(parent.begin(), parent.end(), 0);
-  for (const auto& t : mesh.triangles)
-    for (int k = 1; k < 3; ++k) parent[findRoot(parent, t[k])] = findRoot(parent, t[0]);
-  std::vector<int> pieceOf(p.size(), -1);
+  const std::vector<int> pieceOf = vertexPieces(mesh);
   std::vector<Piece> pieces;
   for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
     const auto& t = mesh.triangles[i];
-    const int root = findRoot(parent, t[0]);
-    if (pieceOf[root] < 0) {
-      pieceOf[root] = int(pieces.size());
-      pieces.push_back({0, t[0], -1, -1});
-    }
-    Piece& piece = pieces[pieceOf[root]];
+    if (pieceOf[t[0]] == int(pieces.size())) pieces.push_back({0, t[0], -1, -1});
+    Piece& piece = pieces[pieceOf[t[0]]];
     const Vec3 &o = p[piece.origin], a = p[t[0]] - o, b = p[t[1]] - o, c = p[t[2]] - o;
     piece.volume += a.dot(b.cross(c)) / 6;
     const double area = 0.5 * (b - a).cross(c - a).norm();

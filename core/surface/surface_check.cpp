@@ -265,22 +265,26 @@ void flipOrientation(SurfaceMesh& mesh) {
   for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
 }
 
-int connectedComponents(const SurfaceMesh& s) {
+std::vector<int> vertexPieces(const SurfaceMesh& s) {
   std::vector<int> parent(s.positions.size());
-  for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = int(i);
-  auto find = [&](int i) {
-    while (parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
-  };
-  std::vector<char> used(s.positions.size(), 0);
+  std::iota(parent.begin(), parent.end(), 0);
   for (const auto& t : s.triangles) {
-    for (int v : t) used[v] = 1;
-    parent[find(t[1])] = find(t[0]);
-    parent[find(t[2])] = find(t[0]);
+    parent[findRoot(parent, t[1])] = findRoot(parent, t[0]);
+    parent[findRoot(parent, t[2])] = findRoot(parent, t[0]);
   }
-  int count = 0;
-  for (std::size_t i = 0; i < parent.size(); ++i) count += used[i] && find(int(i)) == int(i);
-  return count;
+  std::vector<int> piece(s.positions.size(), -1), pieceOfRoot(s.positions.size(), -1);
+  int pieces = 0;
+  for (const auto& t : s.triangles) {
+    int& p = pieceOfRoot[findRoot(parent, t[0])];
+    if (p < 0) p = pieces++;
+    for (int v : t) piece[v] = p;
+  }
+  return piece;
+}
+
+int connectedComponents(const SurfaceMesh& s) {
+  const std::vector<int> piece = vertexPieces(s);
+  return piece.empty() ? 0 : *std::max_element(piece.begin(), piece.end()) + 1;
 }
 
 }  // namespace tfd::core

@@ -39,6 +39,10 @@ long eulerCharacteristic(const SurfaceMesh& mesh);
 /// triangle uses are not counted.
 int connectedComponents(const SurfaceMesh& mesh);
 
+/// The connected component of each vertex (triangles sharing a vertex are connected),
+/// numbered 0, 1, ... in the order of their first triangle; −1 for a vertex no triangle uses.
+std::vector<int> vertexPieces(const SurfaceMesh& mesh);
+
 /// Removes vertices no triangle references, keeping the order of the others.
 void removeUnreferencedVertices(SurfaceMesh& mesh);
 

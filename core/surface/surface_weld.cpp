@@ -210,10 +210,10 @@ double openEdgeWeldDistance(const SurfaceMesh& mesh, double within) {
   if (open.empty()) return 0;
   constexpr double kInf = std::numeric_limits<double>::infinity();
   if (!(within > 0) || !std::isfinite(within)) return kInf;
-  // Open edges by the grid cell (side `within`) of each end.
-  std::unordered_map<Cell, std::vector<int>, CellHash> byCell;
+  // Both ends of every open edge, filed by grid cell (side `within`): end 2e + k of edge e.
+  CellTable ends(2 * open.size());
   for (int e = 0; e < int(open.size()); ++e)
-    for (int v : open[e]) byCell[cellOf(mesh.positions[v], within)].push_back(e);
+    for (int k = 0; k < 2; ++k) ends.file(cellOf(mesh.positions[open[e][k]], within), 2 * e + k);
   auto gap = [&](int a, int b) { return (mesh.positions[a] - mesh.positions[b]).norm(); };
   // Each open edge's nearest twin: another open edge whose ends lie within `within` of its
   // own, matched end to end (a shared end is 0 away); the edge's gap is the farther end.
@@ -225,14 +225,13 @@ double openEdgeWeldDistance(const SurfaceMesh& mesh, double within) {
     for (std::int64_t dx = -1; dx <= 1; ++dx)
       for (std::int64_t dy = -1; dy <= 1; ++dy)
         for (std::int64_t dz = -1; dz <= 1; ++dz) {
-          const auto it = byCell.find({c[0] + dx, c[1] + dy, c[2] + dz});
-          if (it == byCell.end()) continue;
-          for (int f : it->second) {
-            if (f == e) continue;
+          ends.forEach({c[0] + dx, c[1] + dy, c[2] + dz}, [&](int end) {
+            const int f = end / 2;
+            if (f == e) return;
             const auto [p, q] = open[f];
             nearest =
                 std::min({nearest, std::max(gap(a, p), gap(b, q)), std::max(gap(a, q), gap(b, p))});
-          }
+          });
         }
     if (!(nearest <= within)) return kInf;
     widest = std::max(widest, nearest);
