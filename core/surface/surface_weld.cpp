@@ -219,7 +219,7 @@ double openEdgeWeldDistance(const SurfaceMesh& mesh, double within) {
   // own, matched end to end (a shared end is 0 away); the edge's gap is the farther end.
   double widest = 0;
   for (int e = 0; e < int(open.size()); ++e) {
-    const auto [a, b] = open[e];
+    const int a = open[e][0], b = open[e][1];  // plain ints: a lambda below reads them
     const auto c = cellOf(mesh.positions[a], within);
     double nearest = kInf;
     for (std::int64_t dx = -1; dx <= 1; ++dx)
